@@ -1,0 +1,25 @@
+#pragma once
+// Progress lines for long runs: "label i/N ... ETA".
+#include <chrono>
+#include <ostream>
+#include <string>
+
+namespace gearfem
+{
+  class Progress
+  {
+  public:
+    /// @param out    where to print (rank-0 stream); nullptr silences it
+    /// @param total  number of steps N
+    Progress(std::ostream *out, std::size_t total, std::string label);
+    /// Report that step i (1-based) has finished; `detail` is appended to the line.
+    void step(std::size_t i, const std::string &detail = "");
+    double elapsed_seconds() const;
+
+  private:
+    std::ostream *out_;
+    std::size_t total_;
+    std::string label_;
+    std::chrono::steady_clock::time_point start_;
+  };
+} // namespace gearfem

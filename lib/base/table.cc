@@ -1,0 +1,101 @@
+#include "base/table.h"
+
+#include "base/atomic_file.h"
+#include "base/errors.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace gearfem
+{
+  void Table::add_column(const std::string &name, const std::string &unit)
+  {
+    if (!rows_.empty())
+      throw std::logic_error("Table: add columns before rows");
+    names_.push_back(name);
+    units_.push_back(unit);
+  }
+
+  void Table::add_row(const std::vector<double> &row)
+  {
+    if (row.size() != names_.size())
+      throw std::logic_error("Table: row size does not match the number of columns");
+    rows_.push_back(row);
+  }
+
+  std::vector<double> Table::column(const std::string &name) const
+  {
+    for (std::size_t c = 0; c < names_.size(); ++c)
+      if (names_[c] == name)
+        {
+          std::vector<double> v;
+          for (const auto &r : rows_)
+            v.push_back(r[c]);
+          return v;
+        }
+    throw std::logic_error("Table: no column " + name);
+  }
+
+  std::vector<std::string> Table::headers() const
+  {
+    std::vector<std::string> h;
+    for (std::size_t c = 0; c < names_.size(); ++c)
+      h.push_back(units_[c].empty() ? names_[c] : names_[c] + " [" + units_[c] + "]");
+    return h;
+  }
+
+  void Table::write_csv(const std::filesystem::path &file, int significant) const
+  {
+    AtomicOutputFile f(file);
+    const auto h = headers();
+    for (std::size_t c = 0; c < h.size(); ++c)
+      f << (c ? "," : "") << h[c];
+    f << "\n";
+    f.stream() << std::setprecision(significant);
+    for (const auto &r : rows_)
+      {
+        for (std::size_t c = 0; c < r.size(); ++c)
+          {
+            if (!std::isfinite(r[c]))
+              throw std::runtime_error("Table: non-finite value in column '" + names_[c] +
+                                       "' while writing " + file.string());
+            f << (c ? "," : "") << r[c];
+          }
+        f << "\n";
+      }
+    f.commit();
+  }
+
+  std::vector<std::vector<double>> read_csv_numbers(const std::filesystem::path &file,
+                                                    std::vector<std::string> *headers)
+  {
+    std::ifstream in(file);
+    if (!in)
+      throw InputError("cannot open CSV file '" + file.string() + "'");
+    std::string line;
+    std::vector<std::vector<double>> rows;
+    bool first = true;
+    while (std::getline(in, line))
+      {
+        if (line.empty())
+          continue;
+        std::stringstream ss(line);
+        std::string cell;
+        if (first)
+          {
+            first = false;
+            if (headers)
+              while (std::getline(ss, cell, ','))
+                headers->push_back(cell);
+            continue;
+          }
+        std::vector<double> row;
+        while (std::getline(ss, cell, ','))
+          row.push_back(std::stod(cell));
+        rows.push_back(row);
+      }
+    return rows;
+  }
+} // namespace gearfem

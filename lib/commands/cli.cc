@@ -1,0 +1,283 @@
+// gearfem command-line interface: argument parsing, parameter handling, output folder,
+// run.json, and the mapping of errors to exit statuses (see base/errors.h).
+#include "base/atomic_file.h"
+#include "base/errors.h"
+#include "commands/command.h"
+#include "gearfem/version.h"
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace gearfem::commands
+{
+  namespace
+  {
+    void print_usage(std::ostream &out)
+    {
+      out << "gearfem " << version_string << " (" << git_hash << ")\n"
+          << "Finite-element spur-gear contact analysis.\n\n"
+          << "Usage: gearfem <command> <file.prm> [--output-dir DIR] [--validate]\n"
+          << "       gearfem <command> --print-parameters [json|prm]\n"
+          << "       gearfem <command> --help\n"
+          << "       gearfem --version\n\nCommands:\n";
+      for (const auto &c : registry())
+        out << "  " << std::left << std::setw(11) << c.name << c.summary << "\n";
+      out << "\nExit status: 0 success, 2 bad input, 3 solver failure, 1 internal error.\n";
+    }
+
+    void declare_output(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory", "", dealii::Patterns::Anything(),
+                        "Output folder. Empty: results/<input file name without .prm>. "
+                        "The command-line option --output-dir overrides it.");
+      prm.leave_subsection();
+    }
+
+    std::string exception_text(const dealii::ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      std::string t = s.str();
+      while (!t.empty() && (t.back() == '\n' || t.back() == ' '))
+        t.pop_back();
+      while (!t.empty() && (t.front() == '\n' || t.front() == ' '))
+        t.erase(t.begin());
+      return t;
+    }
+
+    std::string json_escape(const std::string &s)
+    {
+      std::string r;
+      for (char c : s)
+        {
+          if (c == '"' || c == '\\')
+            r += '\\';
+          if (c == '\n')
+            {
+              r += "\\n";
+              continue;
+            }
+          r += c;
+        }
+      return r;
+    }
+
+    int run_command(const Command &cmd, int argc, char **argv)
+    {
+      RunContext ctx;
+      ctx.out = &std::cout;
+      std::string print_format;
+      bool print_parameters = false;
+      std::string output_dir_option;
+      for (int i = 0; i < argc; ++i)
+        ctx.command_line += (i ? " " : "") + std::string(argv[i]);
+
+      for (int i = 2; i < argc; ++i)
+        {
+          const std::string a = argv[i];
+          if (a == "--help" || a == "-h")
+            {
+              std::cout << "gearfem " << cmd.name << ": " << cmd.summary << "\n\n"
+                        << cmd.description << "\n\nOptions:\n"
+                        << "  --output-dir DIR           output folder (default results/<case>)\n"
+                        << "  --validate                 parse and check the input only\n"
+                        << "  --print-parameters [json|prm]  all parameters with defaults\n";
+              return 0;
+            }
+          else if (a == "--validate")
+            ctx.validate_only = true;
+          else if (a == "--print-parameters")
+            {
+              print_parameters = true;
+              print_format     = "prm";
+              if (i + 1 < argc && argv[i + 1][0] != '-')
+                print_format = argv[++i];
+              if (print_format != "prm" && print_format != "json")
+                throw InputError("--print-parameters", print_format, "{json, prm}");
+            }
+          else if (a == "--output-dir")
+            {
+              if (i + 1 >= argc)
+                throw InputError("--output-dir", "(missing)", "a folder name");
+              output_dir_option = argv[++i];
+            }
+          else if (a.size() > 1 && a[0] == '-')
+            throw InputError("command-line option", a,
+                             "--output-dir, --validate, --print-parameters, --help");
+          else
+            ctx.arguments.push_back(a);
+        }
+
+      dealii::ParameterHandler prm;
+      cmd.declare(prm);
+      declare_output(prm);
+
+      if (print_parameters)
+        {
+          prm.print_parameters(std::cout, print_format == "json" ?
+                                            dealii::ParameterHandler::JSON :
+                                            dealii::ParameterHandler::PRM);
+          return 0;
+        }
+
+      for (const auto &a : ctx.arguments)
+        if (a.size() > 4 && (a.substr(a.size() - 4) == ".prm" || a.substr(a.size() - 5) == ".json"))
+          ctx.input_file = a;
+      if (cmd.needs_input && ctx.input_file.empty())
+        throw InputError("input file", "(none)", "a .prm file",
+                         "usage: gearfem " + cmd.name + " <file.prm>");
+      if (!ctx.input_file.empty())
+        {
+          if (!std::filesystem::is_regular_file(ctx.input_file))
+            throw InputError("input file", ctx.input_file.string(), "an existing readable file",
+                             "file not found");
+          try
+            {
+              prm.parse_input(ctx.input_file.string(), "", false, false);
+            }
+          catch (const dealii::ExceptionBase &e)
+            {
+              throw InputError("in " + ctx.input_file.string() + ": " + exception_text(e));
+            }
+        }
+
+      prm.enter_subsection("Output");
+      const std::string prm_dir = prm.get("Directory");
+      prm.leave_subsection();
+      if (!output_dir_option.empty())
+        ctx.output_dir = output_dir_option;
+      else if (!prm_dir.empty())
+        ctx.output_dir = prm_dir;
+      else
+        ctx.output_dir = std::filesystem::path("results") /
+                         (ctx.input_file.empty() ? cmd.name : ctx.input_file.stem().string());
+
+      if (ctx.validate_only)
+        {
+          cmd.run(prm, ctx);
+          std::cout << "input is valid: " << ctx.input_file.string() << std::endl;
+          return 0;
+        }
+
+      const bool existed = std::filesystem::exists(ctx.output_dir);
+      std::filesystem::create_directories(ctx.output_dir);
+      const auto t0 = std::chrono::steady_clock::now();
+      try
+        {
+          cmd.run(prm, ctx);
+        }
+      catch (...)
+        {
+          // Leave no empty folder behind for a run that failed before writing anything.
+          std::error_code ec;
+          if (!existed && std::filesystem::is_empty(ctx.output_dir, ec))
+            std::filesystem::remove(ctx.output_dir, ec);
+          throw;
+        }
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+      if (!ctx.input_file.empty())
+        {
+          std::ifstream in(ctx.input_file);
+          std::stringstream content;
+          content << in.rdbuf();
+          write_file_atomically(ctx.output_dir / "input.prm", content.str());
+        }
+      std::time_t now = std::time(nullptr);
+      char date[64];
+      std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+      std::ostringstream j;
+      j << "{\n  \"program\": \"gearfem\",\n  \"version\": \"" << version_string
+        << "\",\n  \"git_hash\": \"" << git_hash << "\",\n  \"command\": \"" << cmd.name
+        << "\",\n  \"command_line\": \"" << json_escape(ctx.command_line)
+        << "\",\n  \"input\": \"" << json_escape(ctx.input_file.string())
+        << "\",\n  \"finished_utc\": \"" << date << "\",\n  \"wall_time_s\": " << wall << "\n}\n";
+      write_file_atomically(ctx.output_dir / "run.json", j.str());
+      std::cout << "results in " << ctx.output_dir.string() << " (" << std::fixed
+                << std::setprecision(2) << wall << " s)" << std::endl;
+      return 0;
+    }
+  } // namespace
+
+  bool run_plot_script(const std::string &script_name, const std::vector<std::string> &args,
+                       std::ostream *out)
+  {
+    std::filesystem::path script = std::filesystem::path(GEARFEM_SCRIPTS_DIR) / script_name;
+    if (const char *src = std::getenv("GEARFEM_SOURCE_DIR"))
+      script = std::filesystem::path(src) / "scripts" / script_name;
+    const std::string python = "/usr/bin/python3";
+    if (!std::filesystem::exists(python) || !std::filesystem::exists(script))
+      {
+        if (out)
+          *out << "warning: cannot plot (" << python << " or " << script << " missing)" << std::endl;
+        return false;
+      }
+    std::string cmd = "MPLBACKEND=Agg " + python + " '" + script.string() + "'";
+    for (const auto &a : args)
+      cmd += " '" + a + "'";
+    cmd += " > /dev/null 2>&1";
+    const int rc = std::system(cmd.c_str());
+    if (rc != 0 && out)
+      *out << "warning: plot script " << script_name << " failed (status " << rc << ")" << std::endl;
+    return rc == 0;
+  }
+
+  int main(int argc, char **argv)
+  {
+    try
+      {
+        if (argc < 2)
+          {
+            print_usage(std::cerr);
+            return 2;
+          }
+        const std::string first = argv[1];
+        if (first == "--help" || first == "-h" || first == "help")
+          {
+            print_usage(std::cout);
+            return 0;
+          }
+        if (first == "--version")
+          {
+            std::cout << "gearfem " << version_string << " (git " << git_hash << ")" << std::endl;
+            return 0;
+          }
+        for (const auto &c : registry())
+          if (c.name == first)
+            return run_command(c, argc, argv);
+        std::string names;
+        for (const auto &c : registry())
+          names += (names.empty() ? "" : ", ") + c.name;
+        throw InputError("command", first, "{" + names + "}");
+      }
+    catch (const InputError &e)
+      {
+        std::cerr << "gearfem: error: " << e.what() << std::endl;
+        return 2;
+      }
+    catch (const SolverError &e)
+      {
+        std::cerr << "gearfem: solver failure: " << e.what() << std::endl;
+        return 3;
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::cerr << "gearfem: internal error: " << exception_text(e) << std::endl;
+        return 1;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "gearfem: internal error: " << e.what() << std::endl;
+        return 1;
+      }
+  }
+} // namespace gearfem::commands

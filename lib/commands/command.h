@@ -1,0 +1,54 @@
+#pragma once
+// The command interface of the gearfem CLI. Each command (profile, mesh, solve, rate,
+// dynamics, bench, ...) is one Command value defined in its own file in this folder and
+// listed in registry.cc. The executable only parses arguments and dispatches.
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace gearfem::commands
+{
+  /// What a command gets besides its parameters.
+  struct RunContext
+  {
+    std::filesystem::path input_file;   ///< the .prm file ("" for commands without input)
+    std::filesystem::path output_dir;   ///< where to write (created by the CLI unless validate_only)
+    std::vector<std::string> arguments; ///< positional arguments after the command name
+    std::string command_line;           ///< the full command line, for run.json
+    std::ostream *out = nullptr;        ///< console (rank 0 only)
+    /// When true the command parses and checks its input, prints a summary and returns
+    /// without writing anything.
+    bool validate_only = false;
+  };
+
+  struct Command
+  {
+    std::string name;
+    std::string summary;     ///< one line for `gearfem --help`
+    std::string description; ///< several lines for `gearfem <command> --help`, with sample runs
+    bool needs_input = true; ///< false for commands that run without a .prm (e.g. bench analytical)
+    /// Declare every parameter the command reads (each module declares its own sections).
+    std::function<void(dealii::ParameterHandler &)> declare;
+    /// Run. Throws gearfem::InputError for bad input, gearfem::SolverError for failures.
+    std::function<void(dealii::ParameterHandler &, const RunContext &)> run;
+  };
+
+  /// All commands, in the order `gearfem --help` lists them.
+  const std::vector<Command> &registry();
+
+  /// The CLI entry point used by app/main.cc. Returns the process exit status.
+  int main(int argc, char **argv);
+
+  /// Run a Python plotting script from scripts/ with /usr/bin/python3. Returns false (and
+  /// prints a warning) when python/matplotlib is unavailable or the script fails; plots
+  /// are never required for the numerical results.
+  bool run_plot_script(const std::string &script_name, const std::vector<std::string> &args,
+                       std::ostream *out);
+} // namespace gearfem::commands

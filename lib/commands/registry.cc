@@ -1,0 +1,15 @@
+// The list of CLI commands. Each factory is defined in its own <name>_command.cc.
+#include "commands/registry.h"
+
+namespace gearfem::commands
+{
+  Command profile_command();
+
+  const std::vector<Command> &registry()
+  {
+    static const std::vector<Command> commands = {
+      profile_command(),
+    };
+    return commands;
+  }
+} // namespace gearfem::commands

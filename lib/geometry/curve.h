@@ -1,0 +1,98 @@
+#pragma once
+// Parametric plane curves with exact derivatives. Everything in SI (m, rad).
+// No deal.II types: this is the light layer.
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace gearfem::geometry
+{
+  using Vec2 = Eigen::Vector2d;
+
+  /// A smooth plane curve p(t), t in [t_begin(), t_end()], with exact first and second
+  /// derivatives (third where the generator needs it).
+  class Curve
+  {
+  public:
+    virtual ~Curve() = default;
+    virtual double t_begin() const = 0;
+    virtual double t_end() const = 0;
+    virtual Vec2 point(double t) const = 0;
+    virtual Vec2 d1(double t) const = 0;
+    virtual Vec2 d2(double t) const = 0;
+    /// Third derivative; default by central difference of d2 (exact in overrides).
+    virtual Vec2 d3(double t) const;
+
+    /// Signed curvature (x'y'' - y'x'')/|p'|^3; positive when the curve turns left
+    /// (counter-clockwise) as t grows. Units 1/m.
+    double curvature(double t) const;
+    /// Unit normal pointing to the right of the direction of travel (d1 rotated by -90 deg).
+    /// For an outline traversed counter-clockwise this is the outward normal.
+    Vec2 right_normal(double t) const;
+    /// Parameter of the point of the curve closest to q, by safeguarded Newton from a
+    /// sampled start; clamped to [t_begin, t_end].
+    double closest_parameter(const Vec2 &q) const;
+    /// Arc length between t0 and t1 (adaptive Gauss-Legendre).
+    double arc_length(double t0, double t1) const;
+  };
+
+  using CurvePtr = std::shared_ptr<const Curve>;
+
+  /// Straight segment from a to b, t in [0, 1].
+  class LineSegment : public Curve
+  {
+  public:
+    LineSegment(const Vec2 &a, const Vec2 &b);
+    double t_begin() const override { return 0.0; }
+    double t_end() const override { return 1.0; }
+    Vec2 point(double t) const override;
+    Vec2 d1(double t) const override;
+    Vec2 d2(double t) const override;
+    Vec2 d3(double t) const override;
+
+  private:
+    Vec2 a_, b_;
+  };
+
+  /// Circular arc: centre + r (cos t, sin t), t in [t0, t1] (t1 < t0 traverses clockwise).
+  class CircularArc : public Curve
+  {
+  public:
+    CircularArc(const Vec2 &centre, double radius, double t0, double t1);
+    double t_begin() const override { return t0_; }
+    double t_end() const override { return t1_; }
+    Vec2 point(double t) const override;
+    Vec2 d1(double t) const override;
+    Vec2 d2(double t) const override;
+    Vec2 d3(double t) const override;
+    const Vec2 &centre() const { return c_; }
+    double radius() const { return r_; }
+
+  private:
+    Vec2 c_;
+    double r_, t0_, t1_;
+  };
+
+  /// Clamped B-spline of degree p (default 4) on a uniform open knot vector, t in [0, 1],
+  /// with exact derivatives (seed 003: degree 4, 5 control points).
+  class BSplineCurve : public Curve
+  {
+  public:
+    BSplineCurve(std::vector<Vec2> control_points, unsigned int degree = 4);
+    double t_begin() const override { return 0.0; }
+    double t_end() const override { return 1.0; }
+    Vec2 point(double t) const override;
+    Vec2 d1(double t) const override;
+    Vec2 d2(double t) const override;
+    Vec2 d3(double t) const override;
+    const std::vector<Vec2> &control_points() const { return cp_; }
+    unsigned int degree() const { return p_; }
+
+  private:
+    Vec2 derivative(double t, unsigned int order) const;
+    std::vector<Vec2> cp_;
+    unsigned int p_;
+    std::vector<double> knots_;
+  };
+} // namespace gearfem::geometry

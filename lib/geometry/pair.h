@@ -1,0 +1,94 @@
+#pragma once
+// Pair kinematics of a spur gear pair (external mesh). SI units.
+//
+// Pair frame: pinion (gear 1) centre O1 = (0, 0), gear 2 centre O2 = (0, a). The pinion
+// drives, turning counter-clockwise; gear 2 turns clockwise. The line of action runs
+// from T1 (tangent point on the pinion base circle) to T2; contact travels from A to E.
+// A mesh position is the pinion roll angle phi1 [rad] measured from the position where
+// pinion tooth 0 is in contact at the pitch point C (phi1 = 0 at C, < 0 at A).
+#include "geometry/profile.h"
+
+#include <string>
+#include <vector>
+
+namespace gearfem::geometry
+{
+  struct PairParameters
+  {
+    /// Operating centre distance [m]; 0 means "from the profile shifts" (zero-backlash
+    /// centre distance from inv a_w = inv a + 2 tan a (x1 + x2)/(z1 + z2)).
+    double center_distance = 0.0;
+  };
+
+  /// A point on the line of action.
+  struct LoaPoint
+  {
+    std::string name;
+    Vec2 position;      ///< pair frame [m]
+    double g;           ///< distance from T1 along the line of action [m]
+    double roll_angle;  ///< pinion position phi1 [rad] (0 at C)
+    double r1, r2;      ///< radius of this point on the pinion and on the gear [m]
+  };
+
+  /// Rigid placement of a body in the pair frame: x_pair = centre + R(angle) x_body.
+  struct Placement
+  {
+    Vec2 centre;
+    double angle;
+    Vec2 apply(const Vec2 &x_body) const;
+    Vec2 apply_vector(const Vec2 &v_body) const;
+  };
+
+  class GearPair
+  {
+  public:
+    /// Throws InputError for impossible centre distances, contact ratio < 1, tip-to-fillet
+    /// interference, negative backlash, mismatched module/pressure angle.
+    GearPair(ToothProfile gear1, ToothProfile gear2, const PairParameters &pair);
+
+    const ToothProfile &gear(int i) const { return i == 1 ? g1_ : g2_; }
+    double center_distance() const { return a_; }
+    double working_pressure_angle() const { return alpha_w_; }
+    double working_pitch_radius(int i) const { return i == 1 ? rw1_ : rw2_; }
+    double base_radius(int i) const;
+    double base_pitch() const;
+    double ratio() const; ///< z2 / z1
+
+    /// T1, T2, A, B (LPSTC), C (pitch), D (HPSTC), E, in that order.
+    const std::vector<LoaPoint> &line_of_action() const { return loa_; }
+    const LoaPoint &point(const std::string &name) const;
+    double contact_ratio() const { return eps_alpha_; }
+    double normal_backlash() const { return jn_; }          ///< [m]
+    double circumferential_backlash() const { return jt_; } ///< on the working pitch circle [m]
+    double tip_clearance(int i) const;                      ///< gear i's tip to the mate's root [m]
+
+    /// Rigid placement of gear i in the pair frame at pinion position phi1 (gear 2 at its
+    /// unloaded conjugate angle: drive flanks touching, no load).
+    Placement placement(int i, double phi1) const;
+    /// Gear 2 rotation angle for pinion position phi1. Closed form for involute pairs;
+    /// gap-closing search on the exact outlines for any other pair.
+    double conjugate_angle(double phi1) const;
+    /// The same, always by the gap-closing search (for testing the closed form).
+    double conjugate_angle_by_search(double phi1) const;
+    /// Equivalent curvature 1/rho1 + 1/rho2 at pinion position phi1 for the pair in contact
+    /// nearest to C [1/m] (signed curvatures of the profiles; convex positive).
+    double equivalent_curvature(double phi1) const;
+
+    const std::vector<std::string> &warnings() const { return warnings_; }
+
+    ToothProfile g1_, g2_;
+    double a_ = 0, alpha_w_ = 0, rw1_ = 0, rw2_ = 0;
+    double eps_alpha_ = 0, jn_ = 0, jt_ = 0;
+    std::vector<LoaPoint> loa_;
+    std::vector<std::string> warnings_;
+    double phase1_ = 0, phase2_ = 0; ///< body angles at phi1 = 0
+  };
+
+  /// Seed 001 (Siasos): minimum number of teeth free of undercut,
+  /// Z_min = 2[(h_fP* - x) - rho_fP*(1 - sin a)] / sin^2 a.
+  double minimum_teeth_without_undercut(double alpha, double dedendum, double root_radius,
+                                        double shift);
+  /// Centre distance from the shifts (zero backlash): inv a_w = inv a + 2 tan a (x1+x2)/(z1+z2).
+  double center_distance_from_shifts(double module, double alpha, int z1, int z2, double x1,
+                                     double x2);
+} // namespace gearfem::geometry
