@@ -13,7 +13,9 @@ endfunction()
 # build time of deal.II translation units on the 2-core machine.
 function(gearfem_use_dealii target)
   target_include_directories(${target} SYSTEM PUBLIC ${DEAL_II_INCLUDE_DIRS})
-  target_link_libraries(${target} PUBLIC ${DEAL_II_TARGET_RELEASE})
+  # The imported target alone resolves to a bare -ldeal.ii; the full list carries
+  # Trilinos, PETSc, MPI, gmsh, HDF5 and the rest that deal.II's headers pull in.
+  target_link_libraries(${target} PUBLIC ${DEAL_II_LIBRARIES_RELEASE})
   target_compile_options(${target} PRIVATE -Wno-unused-parameter)
 endfunction()
 
