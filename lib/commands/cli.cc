@@ -140,6 +140,12 @@ namespace gearfem::commands
           if (!std::filesystem::is_regular_file(ctx.input_file))
             throw InputError("input file", ctx.input_file.string(), "an existing readable file",
                              "file not found");
+        }
+      if (!ctx.input_file.empty() && cmd.parse_input)
+        {
+          if (!std::filesystem::is_regular_file(ctx.input_file))
+            throw InputError("input file", ctx.input_file.string(), "an existing readable file",
+                             "file not found");
           try
             {
               prm.parse_input(ctx.input_file.string(), "", false, false);
@@ -159,7 +165,9 @@ namespace gearfem::commands
         ctx.output_dir = prm_dir;
       else
         ctx.output_dir = std::filesystem::path("results") /
-                         (ctx.input_file.empty() ? cmd.name : ctx.input_file.stem().string());
+                         ((ctx.input_file.empty() || !cmd.parse_input) ?
+                            cmd.name :
+                            ctx.input_file.stem().string());
 
       if (ctx.validate_only)
         {

@@ -34,6 +34,8 @@ namespace gearfem::commands
     std::string summary;     ///< one line for `gearfem --help`
     std::string description; ///< several lines for `gearfem <command> --help`, with sample runs
     bool needs_input = true; ///< false for commands that run without a .prm (e.g. bench analytical)
+    /// false for commands that hand the .prm to a sub-command which parses it itself (bench)
+    bool parse_input = true;
     /// Declare every parameter the command reads (each module declares its own sections).
     std::function<void(dealii::ParameterHandler &)> declare;
     /// Run. Throws gearfem::InputError for bad input, gearfem::SolverError for failures.

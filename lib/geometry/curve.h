@@ -33,6 +33,8 @@ namespace gearfem::geometry
     /// Parameter of the point of the curve closest to q, by safeguarded Newton from a
     /// sampled start; clamped to [t_begin, t_end].
     double closest_parameter(const Vec2 &q) const;
+    /// The same, restricted to the parameter interval between a and b (either order).
+    double closest_parameter_in(const Vec2 &q, double a, double b) const;
     /// Arc length between t0 and t1 (adaptive Gauss-Legendre).
     double arc_length(double t0, double t1) const;
   };
@@ -95,4 +97,34 @@ namespace gearfem::geometry
     unsigned int p_;
     std::vector<double> knots_;
   };
+
+  /// An affine image of another curve: p(t) = M c(sigma t) + b with sigma = +1 or -1
+  /// (sigma = -1 reverses the direction; t then runs over [-c.t_end, -c.t_begin]).
+  /// Used for the mirrored (drive) side of a tooth, for reversing a curve's direction, and
+  /// for the complementary rack of the mating gear. Exact derivatives of the base curve.
+  class AffineCurve : public Curve
+  {
+  public:
+    AffineCurve(CurvePtr base, const Eigen::Matrix2d &M, const Vec2 &b, bool reverse);
+    double t_begin() const override;
+    double t_end() const override;
+    Vec2 point(double t) const override;
+    Vec2 d1(double t) const override;
+    Vec2 d2(double t) const override;
+    Vec2 d3(double t) const override;
+    /// The base-curve parameter of curve parameter t.
+    double base_parameter(double t) const { return sigma_ * t; }
+    const CurvePtr &base() const { return base_; }
+
+  private:
+    CurvePtr base_;
+    Eigen::Matrix2d M_;
+    Vec2 b_;
+    double sigma_;
+  };
+
+  /// Mirror image x -> -x (same parameter and direction).
+  CurvePtr mirrored(CurvePtr c);
+  /// The same curve traversed in the opposite direction (parameter t -> -t).
+  CurvePtr reversed(CurvePtr c);
 } // namespace gearfem::geometry

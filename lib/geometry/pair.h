@@ -73,6 +73,19 @@ namespace gearfem::geometry
     /// Equivalent curvature 1/rho1 + 1/rho2 at pinion position phi1 for the pair in contact
     /// nearest to C [1/m] (signed curvatures of the profiles; convex positive).
     double equivalent_curvature(double phi1) const;
+    /// Contact point (pair frame) of the tooth pair nearest to C at pinion position phi1
+    /// [m]: on the line of action for involute pairs, on the rack-generated path of contact
+    /// otherwise.
+    Vec2 contact_point(double phi1) const;
+    /// Point of the path of contact at pinion position phi1 for the tooth pair that is at C
+    /// when phi1 = 0 (no reduction to the pair nearest C; phi1 within [A, E]) [m].
+    Vec2 path_point(double phi1) const;
+    /// Equivalent curvature along the whole path of contact (same pair as path_point) [1/m].
+    double path_curvature(double phi1) const;
+    /// True when both gears are involutes (standard racks): closed-form kinematics apply.
+    bool is_involute() const { return involute_; }
+    /// Zero-backlash centre distance for these tooth thicknesses [m].
+    double zero_backlash_center_distance() const { return a0_; }
 
     const std::vector<std::string> &warnings() const { return warnings_; }
 
@@ -82,6 +95,20 @@ namespace gearfem::geometry
     std::vector<LoaPoint> loa_;
     std::vector<std::string> warnings_;
     double phase1_ = 0, phase2_ = 0; ///< body angles at phi1 = 0
+    bool   involute_ = true;
+    double a0_ = 0;
+    /// Non-involute pairs: the pinion's rack flank pieces generating its coast flank
+    /// (root to tip) with their parameter ranges, and the piece and rack parameter of the
+    /// contact at pinion position phi1.
+    struct PathPiece
+    {
+      CurvePtr rack;
+      double   tl, th;
+    };
+    std::vector<PathPiece>      path_;
+    std::pair<int, double>      path_parameter(double phi1) const;
+
+    double signed_gap(double beta, double phi1) const;
   };
 
   /// Seed 001 (Siasos): minimum number of teeth free of undercut,

@@ -84,13 +84,24 @@ namespace gearfem::geometry
     /// (naming the parameter) for z < 5, m <= 0, alpha outside 10..35 deg, a pointed tip,
     /// and a rack that cannot generate a closed tooth. Warnings are collected.
     static ToothProfile generate(const GearParameters &gear);
+    /// The same from an explicit generating rack (used for the mate of a B-spline gear).
+    static ToothProfile generate(const GearParameters &gear, const GeneratingRack &rack);
+    /// The mate of `gear1`: standard racks generate it from its own parameters; B-spline
+    /// racks and flanks generate it from the complementary rack of gear 1.
+    static ToothProfile generate_mate(const GearParameters &mate, const ToothProfile &gear1);
 
     const GearParameters &parameters() const { return gear_; }
     const std::vector<ProfileSegment> &segments() const { return segments_; }
     const KeyRadii &radii() const { return radii_; }
     const UndercutReport &undercut() const { return undercut_; }
     const std::vector<std::string> &warnings() const { return warnings_; }
+    const GeneratingRack &rack() const { return rack_; }
     int teeth() const { return gear_.teeth; }
+    /// Circular tooth thickness on the tip circle s_a [m].
+    double tip_thickness() const { return tip_thickness_; }
+    /// Indices into segments() of the coast and drive flank pieces (one, or two with tip
+    /// relief: unmodified then relieved on the coast side, the mirror on the drive side).
+    std::vector<int> flank_segments(Side side) const;
     double angular_pitch() const;
 
     /// Points of tooth 0 with spacing <= max_spacing [m] (segment ends included).
@@ -114,6 +125,8 @@ namespace gearfem::geometry
     KeyRadii radii_;
     UndercutReport undercut_;
     std::vector<std::string> warnings_;
+    GeneratingRack rack_;
+    double tip_thickness_ = 0;
   };
 
   /// Closed forms for cross-checking the generator.
@@ -124,7 +137,11 @@ namespace gearfem::geometry
     Vec2 involute(double rb, double psi_b, double xi);
     /// Trochoid of seed 001 (Siasos) for reference radius r0, cutter tip radius rc and
     /// cutter addendum hf (including shift), at generating angle theta; coast side.
+    /// (In Siasos' frame: the cutter tip-arc centre crosses the tooth axis at theta = 0.)
     Vec2 trochoid(double r0, double rc, double hf, double theta);
+    /// The same trochoid in the gear frame of ToothProfile (tooth axis +y, coast side),
+    /// for a cutter tip-arc centre at rack abscissa uc [m]: Rot(-uc/r0) trochoid(...).
+    Vec2 trochoid_gear_frame(double r0, double rc, double hf, double uc, double theta);
     /// inv(a) = tan a - a
     double inv(double a);
     /// Inverse of inv by Newton.

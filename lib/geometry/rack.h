@@ -69,6 +69,9 @@ namespace gearfem::geometry
   struct RackSegment
   {
     CurvePtr curve;
+    /// If set: the exact gear-frame curve this segment generates, with the same parameter
+    /// as `curve` (a B-spline flank given directly; its rack was recovered from it).
+    CurvePtr gear_curve;
     enum class Generates
     {
       tip,
@@ -87,10 +90,18 @@ namespace gearfem::geometry
   public:
     /// Build the cutter for a gear. Throws InputError on inconsistent rack data.
     static GeneratingRack from_parameters(const GearParameters &gear);
+    /// The generating rack of the mating gear for a non-standard (B-spline) pair: the
+    /// flank of this rack seen from the other side, (u, v) -> (p/2 - u, -v), completed
+    /// by the mate's own cutter tip (arc tangent to the flank end, tip line at
+    /// (x - h_fP*) m). Throws InputError if the mate's dedendum cannot be reached.
+    GeneratingRack complement_for(const GearParameters &mate) const;
+    /// Module, pressure angle and kind of the rack this was built from.
+    double module() const { return m_; }
     const std::vector<RackSegment> &segments() const { return segments_; }
     double generating_pitch_radius() const { return r0_; }
 
     std::vector<RackSegment> segments_;
     double r0_ = 0.0;
+    double m_  = 0.0;
   };
 } // namespace gearfem::geometry

@@ -1,0 +1,201 @@
+// Generating racks (cutters) in ISO 53 terms. Rack coordinates: u along the pitch line
+// (u = 0 at the middle of the cutter tooth space = the gear tooth axis), v positive away
+// from the gear centre; the coast side (u > 0) is built, ordered from the gear tip to the
+// gear root. See docs/geometry.md.
+#include "geometry/rack.h"
+
+#include "base/errors.h"
+#include "base/units.h"
+#include "geometry/conjugate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gearfem::geometry
+{
+  namespace
+  {
+    Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
+
+    /// Cutter tip for a rack flank ending at P (tangent d, pointing towards the gear root):
+    /// the flank is continued along its end tangent until an arc of radius rho (the cutter
+    /// tip radius rho_fP m) fits tangent to it and to the tip line v = v_t (the standard
+    /// construction, with the end tangent in place of the straight flank); when the flank
+    /// ends too low for that, the arc tangent at P itself is used. Then the tip flat to the
+    /// middle of the cutter tooth u = p/2.
+    void append_cutter_tip(std::vector<RackSegment> &segments, const Curve &flank, double v_t,
+                           double half_pitch, double rho, const std::string &gear_name)
+    {
+      Vec2       P = flank.point(flank.t_end());
+      const Vec2 d = flank.d1(flank.t_end()).normalized();
+      const Vec2 n = perp(d); // into the cutter tooth
+      if (P.y() < v_t - 1e-12 * half_pitch || !(d.y() < 0))
+        throw InputError("Rack/Dedendum coefficient", "cutter tip line at " +
+                                                          to_string_g(v_t / units::mm) + " mm",
+                         "below the end of the rack flank (" + to_string_g(P.y() / units::mm) +
+                           " mm), which must run downwards",
+                         "the rack flank of " + gear_name + " cannot be closed by the cutter tip");
+      // Length of the straight extension for an arc of radius rho.
+      const double lambda = (v_t + rho - P.y() - rho * n.y()) / d.y();
+      if (lambda > 1e-12 * half_pitch)
+        {
+          const Vec2 Q = P + lambda * d;
+          segments.push_back({std::make_shared<LineSegment>(P, Q), nullptr, RackSegment::Generates::flank});
+          P = Q;
+        }
+      Vec2 tip_start = P;
+      if (n.y() < 1.0 - 1e-12)
+        {
+          const double r  = (P.y() - v_t) / (1.0 - n.y());
+          const Vec2   c  = P + r * n;
+          double       a0 = std::atan2(-n.y(), -n.x());
+          if (a0 < 0)
+            a0 += 2 * units::pi;
+          if (!(a0 > units::pi && a0 < 1.5 * units::pi))
+            throw InputError("Rack/Control points", "end tangent of the rack flank",
+                             "a flank that ends going down and outwards (u' > 0, v' < 0)");
+          if (r > 1e-12 * half_pitch)
+            segments.push_back({std::make_shared<CircularArc>(c, r, a0, 1.5 * units::pi), nullptr,
+                                RackSegment::Generates::fillet});
+          tip_start = Vec2(c.x(), v_t);
+        }
+      if (!(tip_start.x() < half_pitch))
+        throw InputError("Rack/Root radius coefficient",
+                         "cutter tip reaching u = " + to_string_g(tip_start.x() / units::mm) + " mm",
+                         "< half a pitch (" + to_string_g(half_pitch / units::mm) + " mm)",
+                         "the fillet arcs of neighbouring cutter teeth overlap for " + gear_name);
+      segments.push_back({std::make_shared<LineSegment>(tip_start, Vec2(half_pitch, v_t)), nullptr,
+                          RackSegment::Generates::root});
+    }
+
+    void check_monotone(const Curve &c, const std::string &what)
+    {
+      const int n = 400;
+      for (int i = 0; i <= n; ++i)
+        {
+          const double t = c.t_begin() + (c.t_end() - c.t_begin()) * i / n;
+          if (!(c.d1(t).x() > 0.0))
+            throw InputError("Rack/Control points", what,
+                             "a rack flank with u strictly increasing from the tooth tip to the root",
+                             "u' <= 0 at spline parameter " + to_string_g(t));
+        }
+    }
+  } // namespace
+
+  GeneratingRack GeneratingRack::from_parameters(const GearParameters &gear)
+  {
+    const RackParameters &r = gear.rack;
+    require_greater("Rack/Module", r.module / units::mm, 0.0, "mm");
+    require_range("Rack/Pressure angle", r.pressure_angle / units::deg, 10.0, 35.0, "deg");
+    require_range(gear.name + "/Number of teeth", gear.teeth, 5, 10000);
+    require_greater("Rack/Addendum coefficient", r.addendum, 0.0);
+    require_greater("Rack/Dedendum coefficient", r.dedendum, 0.0);
+    if (!(r.root_radius > 0.0 && r.root_radius <= 1.0))
+      throw InputError("Rack/Root radius coefficient", to_string_g(r.root_radius), "(0, 1]",
+                       "the cutter tip radius generates the root fillet");
+    require_range("Rack/Tip radius coefficient", r.tip_radius, 0.0, 1.0);
+    require_range(gear.name + "/Tip shortening coefficient", gear.tip_shortening, 0.0, 1.0);
+
+    GeneratingRack rack;
+    const double   m = r.module, a = r.pressure_angle, x = gear.profile_shift;
+    const double   p = units::pi * m;
+    rack.m_          = m;
+    rack.r0_         = gear.reference_radius();
+    const double v_t = (x - r.dedendum) * m; // cutter tip line (gear root)
+    const double v_b = (x + r.addendum) * m; // cutter space bottom (gear tip, unshortened)
+
+    if (r.kind == RackParameters::Kind::standard)
+      {
+        const double u_p  = p / 4 - gear.thickness_allowance / 2;
+        auto         u_fl = [&](double v) { return u_p + (x * m - v) * std::tan(a); };
+        if (!(u_fl(v_t) < p / 2))
+          throw InputError("Rack/Dedendum coefficient", to_string_g(r.dedendum),
+                           "a cutter tooth of positive tip width",
+                           "the cutter flanks meet before the tip line");
+        const double rho = r.root_radius * m;
+        const double rho_max = (p / 2 - u_fl(v_t)) * std::cos(a) / (1 - std::sin(a));
+        if (rho > rho_max)
+          throw InputError("Rack/Root radius coefficient", to_string_g(r.root_radius),
+                           "<= " + to_string_g(rho_max / m) + " for this dedendum and pressure angle",
+                           "the fillet arcs of one cutter tooth overlap");
+        const Vec2 nf(std::cos(a), std::sin(a)); // flank normal into the cutter tooth
+        // The flank runs up to the cutter space bottom. (Tooth tip rounding is applied to
+        // the generated outline in ToothProfile: the envelope of a corner arc in the cutter
+        // space bottom lies entirely outside the tip circle; see docs/geometry.md.)
+        const Vec2 top(u_fl(v_b), v_b);
+        // Flank: straight line down to the tangent point of the cutter tip arc.
+        Vec2 bottom(u_fl(v_t), v_t);
+        if (rho > 0)
+          {
+            const Vec2 c(u_fl(v_t + rho) + rho / std::cos(a), v_t + rho);
+            bottom = c - rho * nf;
+          }
+        auto flank = std::make_shared<LineSegment>(top, bottom);
+        rack.segments_.push_back({flank, nullptr, RackSegment::Generates::flank});
+        append_cutter_tip(rack.segments_, *flank, v_t, p / 2, rho, gear.name);
+        return rack;
+      }
+
+    // B-spline kinds: no shift or allowance (the mate is generated from the complement).
+    if (gear.profile_shift != 0.0)
+      throw InputError(gear.name + "/Profile shift coefficient", to_string_g(x), "0",
+                       "B-spline racks and flanks are generated without profile shift");
+    if (gear.thickness_allowance != 0.0)
+      throw InputError(gear.name + "/Thickness allowance",
+                       to_string_g(gear.thickness_allowance / units::mm) + " mm", "0 mm",
+                       "not supported for B-spline racks and flanks");
+    std::vector<Vec2> cp;
+    for (const auto &q : r.control_points)
+      cp.push_back(q * m);
+    if (r.kind == RackParameters::Kind::bspline_rack)
+      {
+        if (cp.size() >= 2 && cp.front().y() < cp.back().y())
+          std::reverse(cp.begin(), cp.end());
+        CurvePtr spline = std::make_shared<BSplineCurve>(cp, r.spline_degree);
+        check_monotone(*spline, "B-spline rack");
+        rack.segments_.push_back({spline, nullptr, RackSegment::Generates::flank});
+        append_cutter_tip(rack.segments_, *spline, v_t, p / 2, r.root_radius * m, gear.name);
+        return rack;
+      }
+    // bspline_flank: the gear flank (x > 0 side), ordered root to tip; rack recovered by
+    // involutisation, both traversed tip to root.
+    if (cp.size() >= 2 && cp.front().norm() > cp.back().norm())
+      std::reverse(cp.begin(), cp.end());
+    for (const auto &q : cp)
+      if (!(q.x() > 0))
+        throw InputError("Rack/Control points", "(" + to_string_g(q.x() / m) + ", " +
+                                                  to_string_g(q.y() / m) + ")",
+                         "points of the x > 0 flank of the tooth (x > 0)");
+    CurvePtr flank_gear = std::make_shared<BSplineCurve>(cp, r.spline_degree);
+    CurvePtr flank_rack = reversed(std::make_shared<InverseConjugateCurve>(flank_gear, rack.r0_));
+    check_monotone(*flank_rack, "rack recovered from the B-spline flank");
+    rack.segments_.push_back({flank_rack, reversed(flank_gear), RackSegment::Generates::flank});
+    append_cutter_tip(rack.segments_, *flank_rack, v_t, p / 2, r.root_radius * m, gear.name);
+    return rack;
+  }
+
+  GeneratingRack GeneratingRack::complement_for(const GearParameters &mate) const
+  {
+    if (mate.profile_shift != 0.0)
+      throw InputError(mate.name + "/Profile shift coefficient", to_string_g(mate.profile_shift),
+                       "0", "the mate of a B-spline gear is generated without profile shift");
+    require_range(mate.name + "/Number of teeth", mate.teeth, 5, 10000);
+    GeneratingRack rack;
+    rack.m_          = m_;
+    rack.r0_         = mate.reference_radius();
+    const double   p = units::pi * m_;
+    Eigen::Matrix2d M;
+    M << -1, 0, 0, -1;
+    for (auto it = segments_.rbegin(); it != segments_.rend(); ++it)
+      if (const auto &seg = *it; seg.generates == RackSegment::Generates::flank)
+        {
+          auto c = std::make_shared<AffineCurve>(seg.curve, M, Vec2(p / 2, 0.0), true);
+          check_monotone(*c, "complementary rack of the mating gear");
+          rack.segments_.push_back({c, nullptr, RackSegment::Generates::flank});
+        }
+    const double v_t = (mate.profile_shift - mate.rack.dedendum) * m_;
+    append_cutter_tip(rack.segments_, *rack.segments_.back().curve, v_t, p / 2,
+                      mate.rack.root_radius * m_, mate.name);
+    return rack;
+  }
+} // namespace gearfem::geometry

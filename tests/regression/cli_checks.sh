@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# CLI regression checks for gearfem (see CMakeLists.txt beside this file).
+#   cli_checks.sh bad      GEARFEM FILE.prm   exit 2, the parameter named on line 3
+#                                             ("# expect: ...") in stderr, no output left
+#   cli_checks.sh demo     GEARFEM SRC_DIR    profile run of inputs/demo.prm
+#   cli_checks.sh validate GEARFEM SRC_DIR    every inputs/*.prm passes --validate
+#   cli_checks.sh basics   GEARFEM SRC_DIR    --help, --version, unknown command, missing file
+set -uo pipefail
+mode=$1 gearfem=$2 arg=$3
+fail() { echo "FAIL: $*" >&2; exit 1; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/gearfem_cli.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+# value QUANTITY: the value column of pair.csv
+value() { awk -F, -v q="$1" '$1 == q { print $2 }' "$work/out/pair.csv"; }
+# near A B TOL: |A - B| <= TOL
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }'; }
+
+case $mode in
+  bad)
+    expect=$(sed -n 's/^# expect: //p' "$arg")
+    [ -n "$expect" ] || fail "$arg has no '# expect:' line"
+    "$gearfem" profile "$arg" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit status $rc (expected 2) for $arg"
+    grep -qF "$expect" "$work/stderr" || fail "message does not name '$expect'"
+    grep -qi "internal error\|terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
+    [ ! -e "$work/out" ] || [ -z "$(ls -A "$work/out")" ] || fail "output left behind: $(ls "$work/out")"
+    # --validate gives the same answer and writes nothing either.
+    "$gearfem" profile --validate "$arg" > /dev/null 2>&1
+    [ $? -eq 2 ] || fail "--validate did not exit 2 for $arg"
+    ;;
+  demo)
+    "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
+      { cat "$work/stdout"; fail "demo run failed"; }
+    cat "$work/stdout"
+    for f in profile_gear1.csv profile_gear2.csv pair.csv contact_path.csv input.prm run.json; do
+      [ -s "$work/out/$f" ] || fail "missing $f"
+    done
+    ls -A "$work/out" > "$work/listing"
+    grep -q 'tmp' "$work/listing" && fail "temporary file left behind"
+    head -1 "$work/out/profile_gear1.csv" > "$work/header"
+    grep -q '^x \[mm\],y \[mm\],nx \[-\],ny \[-\],curvature \[1/mm\]' "$work/header" ||
+      fail "profile CSV header"
+    # Closed forms for the demo pair (z 50/50, m 3, alpha 20 deg, a 150 mm, ISO 53 rack):
+    # rb = 75 cos 20, ra = 78, rf = 71.25, eps = (2 sqrt(ra^2 - rb^2) - a sin 20)/(pi m cos 20),
+    # zero backlash, 1/R(C) = 2 * 2/(a sin 20) = 4/(150 sin 20).
+    read -r rb eps kc <<< "$(awk 'BEGIN { a = 20 * atan2(1, 1) / 45; rb = 75 * cos(a);
+      e = (2 * sqrt(78 * 78 - rb * rb) - 150 * sin(a)) / (atan2(1, 1) * 4 * 3 * cos(a));
+      printf "%.15g %.15g %.15g\n", rb, e, 4 / (150 * sin(a)) }')"
+    near "$(value 'base radius 1')" "$rb" 1e-9 || fail "base radius"
+    near "$(value 'tip radius 2')" 78 1e-9 || fail "tip radius"
+    near "$(value 'root radius 1')" 71.25 1e-9 || fail "root radius"
+    near "$(value 'transverse contact ratio')" "$eps" 1e-9 || fail "contact ratio $(value 'transverse contact ratio') vs $eps"
+    near "$(value 'circumferential backlash')" 0 1e-6 || fail "backlash"
+    near "$(value 'equivalent curvature at C')" "$kc" 1e-9 || fail "curvature at C"
+    near "$(value 'C roll angle')" 0 1e-9 || fail "C roll angle"
+    # Every profile point lies between the root and tip circles.
+    awk -F, 'NR > 1 { r = sqrt($1 * $1 + $2 * $2); if (r < 71.25 - 1e-6 || r > 78 + 1e-6) bad++ }
+             END { exit bad > 0 }' "$work/out/profile_gear1.csv" || fail "profile point outside [rf, ra]"
+    if /usr/bin/python3 -c 'import matplotlib' 2> /dev/null; then
+      [ -s "$work/out/profile.png" ] || fail "profile.png missing"
+    fi
+    ;;
+  validate)
+    n=0
+    for f in "$arg"/inputs/*.prm; do
+      cmd=$(sed -n 's/^#[[:space:]]*gearfem[[:space:]]\+\([a-z]\+\).*/\1/p' "$f" | head -n 1)
+      cmd=${cmd:-profile}
+      "$gearfem" "$cmd" --validate "$f" > "$work/log" 2>&1 || { cat "$work/log"; fail "$f does not validate"; }
+      n=$((n + 1))
+    done
+    echo "$n inputs validated"
+    [ "$n" -gt 0 ] || fail "no inputs found"
+    ;;
+  basics)
+    "$gearfem" --help > "$work/o" 2>&1; grep -q profile "$work/o" || fail "--help does not list profile"
+    "$gearfem" --version > "$work/o" 2>&1; grep -q gearfem "$work/o" || fail "--version"
+    "$gearfem" profile --help > "$work/o" 2>&1; grep -q "Sample runs" "$work/o" || fail "profile --help"
+    "$gearfem" profile --print-parameters prm > "$work/o" 2>&1
+    grep -q "Number of teeth" "$work/o" || fail "--print-parameters prm"
+    "$gearfem" profile --print-parameters json > "$work/o" 2>&1
+    grep -q '"Pressure angle"' "$work/o" || fail "--print-parameters json"
+    "$gearfem" nosuchcommand x.prm > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown command not exit 2"
+    "$gearfem" profile "$work/missing.prm" > /dev/null 2>&1; [ $? -eq 2 ] || fail "missing file not exit 2"
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac
+echo "ok"

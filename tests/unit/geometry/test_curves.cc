@@ -1,0 +1,101 @@
+// Curves, conjugate generation and its inverse: exactness checks against closed forms.
+#include "geometry/conjugate.h"
+#include "geometry/curve.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gearfem::geometry;
+
+namespace
+{
+  double fd_error(const Curve &c, int order, double t)
+  {
+    // Central difference of the next-lower derivative (independent of the analytic one).
+    const double h = 1e-6;
+    Vec2         fd, ex;
+    if (order == 1)
+      fd = (c.point(t + h) - c.point(t - h)) / (2 * h), ex = c.d1(t);
+    else
+      fd = (c.d1(t + h) - c.d1(t - h)) / (2 * h), ex = c.d2(t);
+    return (fd - ex).norm() / std::max(1.0, ex.norm());
+  }
+} // namespace
+
+// Closed form: a degree-4 clamped B-spline with 5 control points is the Bezier curve, so
+// p(0) = P0, p'(0) = 4 (P1 - P0), p''(0) = 12 (P2 - 2 P1 + P0), p(1/2) = sum of Bernstein terms.
+TEST(Curves, BSplineIsBezierForFivePoints)
+{
+  std::vector<Vec2> P = {{0, 0}, {1, 2}, {3, 3}, {4, 1}, {6, 0}};
+  BSplineCurve      c(P, 4);
+  EXPECT_LT((c.point(0) - P[0]).norm(), 1e-14);
+  EXPECT_LT((c.point(1) - P[4]).norm(), 1e-14);
+  EXPECT_LT((c.d1(0) - 4 * (P[1] - P[0])).norm(), 1e-12);
+  EXPECT_LT((c.d2(0) - 12 * (P[2] - 2 * P[1] + P[0])).norm(), 1e-12);
+  EXPECT_LT((c.d3(0) - 24 * (P[3] - 3 * P[2] + 3 * P[1] - P[0])).norm(), 1e-11);
+  const Vec2 half = (P[0] + 4 * P[1] + 6 * P[2] + 4 * P[3] + P[4]) / 16.0;
+  EXPECT_LT((c.point(0.5) - half).norm(), 1e-14);
+}
+
+// More control points than degree + 1: derivatives agree with finite differences.
+TEST(Curves, BSplineDerivativesMatchFiniteDifferences)
+{
+  BSplineCurve c({{0, 0}, {1, 2}, {3, 3}, {4, 1}, {6, 0}, {7, 2}, {8, 1}}, 4);
+  for (double t : {0.1, 0.33, 0.5, 0.77, 0.9})
+    {
+      EXPECT_LT(fd_error(c, 1, t), 1e-7);
+      EXPECT_LT(fd_error(c, 2, t), 1e-6);
+    }
+}
+
+// closest_parameter recovers the foot of a perpendicular on a circle to ~1e-12.
+TEST(Curves, ClosestParameterOnArc)
+{
+  CircularArc arc(Vec2(0.01, 0.02), 0.05, 0.2, 2.5);
+  for (double t : {0.3, 1.0, 2.2})
+    {
+      const Vec2 q = arc.point(t) + 0.003 * (arc.point(t) - arc.centre()).normalized();
+      EXPECT_NEAR(arc.closest_parameter(q), t, 1e-11);
+    }
+  // Curvature of a CCW circle is +1/r.
+  EXPECT_NEAR(arc.curvature(1.0), 1 / 0.05, 1e-9);
+}
+
+// The conjugate of a straight rack flank has exact derivatives (finite-difference check),
+// and InverseConjugateCurve ("involutisation") recovers the straight rack from it.
+TEST(Conjugate, InverseRecoversStraightRack)
+{
+  const double a = 20 * M_PI / 180, r0 = 0.05, m = 0.005;
+  auto rack = std::make_shared<LineSegment>(Vec2(m * M_PI / 4 - m * std::tan(a), m),
+                                            Vec2(m * M_PI / 4 + m * std::tan(a), -m));
+  auto gear = std::make_shared<ConjugateCurve>(rack, r0);
+  for (double t : {0.1, 0.4, 0.7})
+    {
+      EXPECT_LT(fd_error(*gear, 1, t), 1e-7);
+      EXPECT_LT(fd_error(*gear, 2, t), 1e-5);
+    }
+  InverseConjugateCurve back(gear, r0);
+  for (double t : {0.05, 0.3, 0.6, 0.9})
+    EXPECT_LT((back.point(t) - rack->point(t)).norm(), 1e-12) << "t = " << t;
+  // Its derivatives: tangent parallel to the rack line.
+  for (double t : {0.2, 0.5})
+    {
+      const Vec2 d = back.d1(t), r = rack->d1(t);
+      EXPECT_LT(std::abs(d.x() * r.y() - d.y() * r.x()) / (d.norm() * r.norm()), 1e-9);
+      EXPECT_LT(fd_error(back, 1, t), 1e-6);
+    }
+}
+
+// Round trip on a B-spline flank: flank -> rack (inverse) -> flank (forward) to 1e-12 m.
+TEST(Conjugate, BSplineFlankRoundTrip)
+{
+  const double m = 2.5e-3, r0 = 19 * m / 2;
+  std::vector<Vec2> cp = {{1.45 * m, 8.5 * m}, {1.35 * m, 8.9 * m}, {1.2 * m, 9.4 * m},
+                          {1.0 * m, 9.9 * m},  {0.8 * m, 10.4 * m}};
+  auto flank = std::make_shared<BSplineCurve>(cp, 4);
+  auto rack  = std::make_shared<InverseConjugateCurve>(flank, r0);
+  ConjugateCurve again(rack, r0);
+  for (double t : {0.0, 0.25, 0.5, 0.75, 1.0})
+    EXPECT_LT((again.point(t) - flank->point(t)).norm(), 1e-12) << "t = " << t;
+}
