@@ -1,0 +1,122 @@
+#include "analytical/mesh_cycle.h"
+
+#include "base/errors.h"
+
+#include <cmath>
+
+namespace gearfem::analytical
+{
+  namespace
+  {
+    void check(const MeshModel &m)
+    {
+      if (!m.pair_compliance)
+        throw InputError("mesh model: no pair compliance function");
+      if (!(m.base_pitch > 0.0 && m.rb1 > 0.0 && m.g_E > m.g_A))
+        throw InputError("mesh model: inconsistent line of action (g_A = " + to_string_g(m.g_A) +
+                         ", g_E = " + to_string_g(m.g_E) + ", p_b = " + to_string_g(m.base_pitch) + ")");
+    }
+
+    // F = x / lambda(g, F), fixed point (lambda decreases slowly with F: Hertz log term).
+    double pair_load_at(const MeshModel &m, double g, double x)
+    {
+      double F = x / m.pair_compliance(g, 1.0);
+      for (int it = 0; it < 200; ++it)
+        {
+          const double Fn = x / m.pair_compliance(g, F);
+          if (std::abs(Fn - F) <= 1e-13 * std::abs(Fn))
+            return Fn;
+          F = Fn;
+        }
+      throw SolverError("load at compression: fixed point did not converge at g = " + to_string_g(g));
+    }
+  } // namespace
+
+  std::vector<double> contact_positions(const MeshModel &m, double phi)
+  {
+    check(m);
+    const double g0 = m.g_C + m.rb1 * phi;
+    // Shift to the first position >= g_A.
+    const double j0 = std::ceil((m.g_A - g0) / m.base_pitch - 1e-12);
+    std::vector<double> g;
+    for (double gj = g0 + j0 * m.base_pitch; gj < m.g_E; gj += m.base_pitch)
+      if (gj >= m.g_A - 1e-12 * m.base_pitch)
+        g.push_back(gj);
+    return g;
+  }
+
+  MeshState solve_mesh_position(const MeshModel &m, double phi, double load)
+  {
+    require_greater("mesh load", load, 0.0, "N");
+    MeshState s;
+    s.roll_angle = phi;
+    s.load = load;
+    s.g = contact_positions(m, phi);
+    const std::size_t n = s.g.size();
+    if (n == 0)
+      throw SolverError("no tooth pair in contact at roll angle " + to_string_g(phi) + " rad");
+    s.pair_load.assign(n, load / n);
+    s.pair_stiffness.assign(n, 0.0);
+    for (int it = 1; it <= 200; ++it)
+      {
+        double ksum = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            s.pair_stiffness[i] = 1.0 / m.pair_compliance(s.g[i], s.pair_load[i]);
+            ksum += s.pair_stiffness[i];
+          }
+        s.deflection = load / ksum;
+        double change = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            const double F = s.deflection * s.pair_stiffness[i];
+            change = std::max(change, std::abs(F - s.pair_load[i]) / load);
+            s.pair_load[i] = F;
+          }
+        s.iterations = it;
+        if (change < 1e-12)
+          {
+            s.stiffness = ksum;
+            if (!std::isfinite(s.deflection) || !(s.deflection > 0.0))
+              throw SolverError("mesh position: non-positive deflection at roll angle " + to_string_g(phi));
+            return s;
+          }
+      }
+    throw SolverError("mesh position: Hertz load iteration did not converge at roll angle " +
+                      to_string_g(phi) + " rad");
+  }
+
+  std::vector<MeshState> mesh_cycle(const MeshModel &m, double load, int n, int pitches)
+  {
+    check(m);
+    require_greater("number of mesh positions", n, 0);
+    require_greater("number of pitches", pitches, 0);
+    const double phiA = (m.g_A - m.g_C) / m.rb1;
+    const double span = pitches * m.base_pitch / m.rb1;
+    std::vector<MeshState> out;
+    out.reserve(n);
+    for (int i = 0; i < n; ++i)
+      out.push_back(solve_mesh_position(m, phiA + span * i / n, load));
+    return out;
+  }
+
+  double load_at_compression(const MeshModel &m, double phi, double x)
+  {
+    if (!(x > 0.0))
+      return 0.0;
+    double F = 0.0;
+    for (double g : contact_positions(m, phi))
+      F += pair_load_at(m, g, x);
+    return F;
+  }
+
+  std::vector<std::vector<double>> torque_table(const MeshModel &m, const std::vector<double> &phis,
+                                                const std::vector<double> &xs)
+  {
+    std::vector<std::vector<double>> T(phis.size(), std::vector<double>(xs.size(), 0.0));
+    for (std::size_t i = 0; i < phis.size(); ++i)
+      for (std::size_t j = 0; j < xs.size(); ++j)
+        T[i][j] = m.rb1 * load_at_compression(m, phis[i], xs[j]);
+    return T;
+  }
+} // namespace gearfem::analytical

@@ -1,0 +1,129 @@
+#include "analytical/parameters.h"
+
+#include "base/errors.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+namespace gearfem::analytical
+{
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::Selection;
+
+  void declare_rating_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rating");
+    prm.declare_entry("Pinion torques", "500, 400, 300, 200", List(Double(0)),
+                      "Pinion torques to rate, one report column each. Units: N m. Allowed: > 0.");
+    prm.declare_entry("Pinion speed", "0", Double(0),
+                      "Pinion speed, for the pitch-line velocity only (the dynamic factors are "
+                      "inputs). Units: rpm.");
+    prm.declare_entry("AGMA overload factor", "1", Double(0), "K_o (AGMA 2101-D04). Units: none.");
+    prm.declare_entry("AGMA dynamic factor", "1.05", Double(0),
+                      "K_v (AGMA 2101-D04; 1.05 is seed 001's minimum for wind turbines). Units: none.");
+    prm.declare_entry("AGMA size factor", "1", Double(0), "K_s (AGMA 2101-D04). Units: none.");
+    prm.declare_entry("AGMA surface condition factor", "1", Double(0), "Z_R (AGMA 2101-D04). Units: none.");
+    prm.declare_entry("AGMA rim thickness factor", "1", Double(0),
+                      "K_B (AGMA 2101-D04; 1 for backup ratio >= 1.2). Units: none.");
+    prm.declare_entry("AGMA gear unit class", "precision",
+                      Selection("open|commercial|precision|extra precision"),
+                      "Row of the K_Hma table (AGMA 2101-D04 table 3): open gearing, commercial "
+                      "enclosed, precision enclosed (seed 001), extra precision enclosed.");
+    prm.declare_entry("AGMA load distribution factor", "0", Double(0),
+                      "K_H; 0 computes 1 + K_Hma + K_Hpf (AGMA 2101-D04 empirical method, "
+                      "K_Hmc = K_Hpm = K_He = 1). Units: none.");
+    prm.declare_entry("AGMA tool teeth", "10000", Double(10),
+                      "n_o of the AGMA 908 shaper cutter (10000 = hob). Units: none.");
+    prm.declare_entry("AGMA tool addendum modification", "0", Double(-2, 2),
+                      "x_o of the AGMA 908 tool. Units: multiples of the module.");
+    prm.declare_entry("Application factor", "1", Double(0), "K_A (ISO 6336-1). Units: none.");
+    prm.declare_entry("ISO dynamic factor", "1.05", Double(0), "K_v (ISO 6336-1, input). Units: none.");
+    prm.declare_entry("ISO face load factor", "1", Double(0),
+                      "K_Hbeta (ISO 6336-1, input); K_Fbeta = K_Hbeta^N_F. Units: none.");
+    prm.declare_entry("ISO accuracy grade", "0", Integer(0, 12),
+                      "ISO 1328-1 grade for K_Halpha, K_Falpha (ISO 6336-1 method B); 0 sets them "
+                      "to 1. Units: none.");
+    prm.declare_entry("Case hardened", "true", Bool(),
+                      "Running-in allowance y_alpha = 0.075 f_pb (case hardened) or 160/sigma_Hlim f_pb.");
+    prm.declare_entry("Contact fatigue limit", "1500", Double(0),
+                      "sigma_Hlim, for y_alpha of through-hardened steel only. Units: MPa.");
+    prm.leave_subsection();
+  }
+
+  RatingInput parse_rating_parameters(dealii::ParameterHandler &prm)
+  {
+    RatingInput in;
+    prm.enter_subsection("Rating");
+    in.torques = dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get("Pinion torques")));
+    in.speed = prm.get_double("Pinion speed");
+    in.K_o = prm.get_double("AGMA overload factor");
+    in.K_v = prm.get_double("AGMA dynamic factor");
+    in.K_s = prm.get_double("AGMA size factor");
+    in.Z_R = prm.get_double("AGMA surface condition factor");
+    in.K_B = prm.get_double("AGMA rim thickness factor");
+    in.enclosure = agma::enclosure_from_string(prm.get("AGMA gear unit class"));
+    in.K_H = prm.get_double("AGMA load distribution factor");
+    in.tool.n_o = prm.get_double("AGMA tool teeth");
+    in.tool.x_o = prm.get_double("AGMA tool addendum modification");
+    in.K_A = prm.get_double("Application factor");
+    in.K_v_iso = prm.get_double("ISO dynamic factor");
+    in.K_Hbeta = prm.get_double("ISO face load factor");
+    in.accuracy_grade = prm.get_integer("ISO accuracy grade");
+    in.case_hardened = prm.get_bool("Case hardened");
+    in.sigma_Hlim = prm.get_double("Contact fatigue limit") * 1e6;
+    prm.leave_subsection();
+    if (in.torques.empty())
+      throw InputError("Rating/Pinion torques", "(empty)", "one or more values > 0 N m");
+    for (double T : in.torques)
+      require_greater("Rating/Pinion torques", T, 0.0, "N m");
+    for (auto f : {std::pair<const char *, double>{"AGMA overload factor", in.K_o},
+                   {"AGMA dynamic factor", in.K_v}, {"AGMA size factor", in.K_s},
+                   {"AGMA surface condition factor", in.Z_R}, {"AGMA rim thickness factor", in.K_B},
+                   {"Application factor", in.K_A}, {"ISO dynamic factor", in.K_v_iso},
+                   {"ISO face load factor", in.K_Hbeta}})
+      require_range(std::string("Rating/") + f.first, f.second, 1.0, 10.0);
+    if (in.K_H != 0.0)
+      require_range("Rating/AGMA load distribution factor", in.K_H, 1.0, 10.0);
+    return in;
+  }
+
+  void declare_analytical_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Analytical");
+    prm.declare_entry("Stiffness model", "weber cornell", Selection("weber cornell|potential energy"),
+                      "Tooth-pair compliance: Weber/Cornell beam + O'Donnell foundation + Weber "
+                      "Hertz (load dependent), or potential energy (Yang & Lin 1987, Tian 2004) "
+                      "beam + Sainsot foundation + constant Hertz. The plane condition is "
+                      "Material/Plane model.");
+    prm.declare_entry("ODonnell constant", "cornell", Selection("cornell|seed000"),
+                      "First O'Donnell foundation constant: 50/(3 pi) (Cornell 1981, default) or "
+                      "50/(2 pi) (seed 000 eq. 3.7). See docs/analytical.md.");
+    prm.declare_entry("Bore diameter 1", "0", Double(0),
+                      "Bore (rim inner) diameter of gear 1, for the Sainsot foundation of the "
+                      "potential-energy model. Units: mm. 0: not set (required by that model).");
+    prm.declare_entry("Bore diameter 2", "0", Double(0), "The same for gear 2. Units: mm.");
+    prm.declare_entry("Mesh positions", "200", Integer(2, 100000),
+                      "Positions over one angular pitch for the mesh-cycle output. Units: none.");
+    prm.leave_subsection();
+  }
+
+  AnalyticalInput parse_analytical_parameters(dealii::ParameterHandler &prm)
+  {
+    AnalyticalInput a;
+    prm.enter_subsection("Analytical");
+    a.options.model = stiffness_model_from_string(prm.get("Stiffness model"));
+    a.options.odonnell = prm.get("ODonnell constant") == "seed000" ? ODonnellConstant::seed000_50_over_2pi :
+                                                                   ODonnellConstant::cornell_50_over_3pi;
+    a.bore_radius1 = 0.5e-3 * prm.get_double("Bore diameter 1");
+    a.bore_radius2 = 0.5e-3 * prm.get_double("Bore diameter 2");
+    a.positions = prm.get_integer("Mesh positions");
+    prm.leave_subsection();
+    if (a.options.model == StiffnessModel::potential_energy && (a.bore_radius1 <= 0 || a.bore_radius2 <= 0))
+      throw InputError("Analytical/Bore diameter 1, 2", "0 mm", "> 0 mm",
+                       "the potential-energy model (Sainsot foundation) needs the bore diameters");
+    return a;
+  }
+} // namespace gearfem::analytical

@@ -1,0 +1,264 @@
+// The analytical models on the generated geometry (involute + real fillet): AGMA Y_J and
+// the ISO 30-degree section on the exact fillet curves, the potential-energy mesh
+// stiffness of the 62/62 case, the Weber/Cornell model against ISO 6336-1.
+#include "analytical/agma.h"
+#include "analytical/from_geometry.h"
+#include "analytical/iso6336.h"
+#include "analytical/mesh_cycle.h"
+#include "analytical/seed000.h"
+#include "analytical/tooth.h"
+#include "geometry/pair.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace gearfem;
+using namespace gearfem::analytical;
+
+namespace
+{
+  constexpr double pi = 3.14159265358979323846;
+  constexpr double deg = pi / 180;
+
+  geometry::GearParameters gear(int z, double m, double x = 0.0, double b = 0.02)
+  {
+    geometry::GearParameters g;
+    g.name = "Gear";
+    g.teeth = z;
+    g.profile_shift = x;
+    g.face_width = b;
+    g.rack.module = m;
+    g.rack.pressure_angle = 20 * deg;
+    g.rack.addendum = 1.0;
+    g.rack.dedendum = 1.25;
+    g.rack.root_radius = 0.25;
+    return g;
+  }
+
+  geometry::GearPair pair(int z1, int z2, double m, double x1 = 0, double x2 = 0)
+  {
+    return geometry::GearPair(geometry::ToothProfile::generate(gear(z1, m, x1)),
+                              geometry::ToothProfile::generate(gear(z2, m, x2)), {});
+  }
+} // namespace
+
+TEST(GeneratedGeometry, ThicknessTableAndInvoluteData)
+{
+  // psi_b from the generated flank equals the closed form (pi/2 + 2 x tan a)/z + inv a, and
+  // the tabulated t(y) reproduces half_width_at_height between the table points.
+  const geometry::ToothProfile p = geometry::ToothProfile::generate(gear(23, 4e-3, 0.2));
+  const InvoluteTooth t = involute_tooth(p);
+  EXPECT_NEAR(t.psi_b, (pi / 2 + 2 * 0.2 * std::tan(20 * deg)) / 23 + std::tan(20 * deg) - 20 * deg, 1e-9);
+  for (double s : {0.013, 0.31, 0.52, 0.77, 0.93})
+    {
+      const double y = s * t.beam.height;
+      EXPECT_NEAR(t.beam.thickness(y) / (2 * p.half_width_at_height(p.radii().root + y)), 1.0, 2e-4) << s;
+    }
+}
+
+TEST(GeneratedGeometry, IsoCriticalSectionOnGeneratedFillet)
+{
+  // ISO 6336-3: the 30-degree construction on the generated (rack) fillet against the
+  // standard's closed form for the same rack.
+  for (auto c : {std::pair<int, double>{23, 0.0}, {69, 0.0}, {17, 0.4}})
+    {
+      const geometry::ToothProfile p = geometry::ToothProfile::generate(gear(c.first, 4e-3, c.second));
+      const iso6336::CriticalSection cs = iso6336::critical_section(fillet_curve(p));
+      const auto cf = iso6336::rack_fillet_closed_form(c.first, 4e-3, 20 * deg, c.second, 1.25, 0.25);
+      EXPECT_NEAR(cs.s_Fn / cf.s_Fn, 1.0, 1e-6) << c.first;
+      EXPECT_NEAR(cs.rho_F / cf.rho_F, 1.0, 1e-5) << c.first;
+      EXPECT_NEAR((cs.y - cf.y) / 4e-3, 0.0, 1e-6) << c.first;
+    }
+}
+
+TEST(GeneratedGeometry, AgmaLewisParabolaOnGeneratedFilletMatchesAgma908)
+{
+  // AGMA 908: Lewis parabola tangent to the fillet. On the exact rack-generated fillet (the
+  // n_o -> infinity limit) against AGMA 908's own trochoid with a 10000-tooth shaper.
+  const geometry::GearPair gp = pair(23, 69, 4e-3);
+  const agma::LineOfAction l = agma::line_of_action(23, 69, 4e-3, 20 * deg, 50e-3, 142e-3, 184e-3);
+  for (int i : {1, 2})
+    {
+      const int z = i == 1 ? 23 : 69;
+      const double tanW = i == 1 ? l.C4 / l.Rb1 : (l.C6 - l.C2) / l.Rb2;
+      const agma::BendingGeometry ref = agma::geometry_factor_J(z, 0, tanW, 20 * deg, l.phi_r);
+      const agma::LewisSection s = agma::lewis_section(fillet_curve(gp.gear(i)), ref.r_nL * 4e-3);
+      agma::BendingGeometry g = ref;
+      g.s_F = s.s_F / 4e-3;
+      g.h_F = s.h_F / 4e-3;
+      g.rho_F = s.rho_F / 4e-3;
+      agma::form_and_stress_factors(g, 20 * deg, l.phi_r);
+      EXPECT_NEAR(g.s_F / ref.s_F, 1.0, 2e-4) << z;
+      EXPECT_NEAR(g.h_F / ref.h_F, 1.0, 2e-4) << z;
+      EXPECT_NEAR(g.rho_F / ref.rho_F, 1.0, 2e-3) << z;
+      EXPECT_NEAR(g.Y_J / ref.Y_J, 1.0, 1e-3) << z;
+      std::printf("AGMA Y_J z=%d: 908 closed form %.5f, generated fillet %.5f\n", z, ref.Y_J, g.Y_J);
+    }
+}
+
+TEST(GeneratedGeometry, PotentialEnergyMeshStiffness62x62)
+{
+  // Issue 5: 62/62, m 2, b 20 mm, bore 35 mm, E 211 GPa: max mesh stiffness of order 4e8 N/m
+  // (the exact reference is held back). Plane stress (the FE default) and plane strain.
+  const geometry::GearPair gp = pair(62, 62, 2e-3);
+  for (auto plane : {PlaneCondition::plane_stress, PlaneCondition::plane_strain})
+    {
+      PairModelOptions o;
+      o.model = StiffnessModel::potential_energy;
+      o.plane = plane;
+      const double r_int = 0.5 * 35e-3; // bore diameter 35 mm
+      PairCompliance pc(involute_tooth(gp.gear(1), r_int), involute_tooth(gp.gear(2), r_int),
+                        {211e9, 0.3}, {211e9, 0.3}, 20e-3, pair_line(gp), o);
+      const auto cycle = mesh_cycle(pc.mesh_model(), 1000.0, 400);
+      double kmax = 0, kmin = 1e300;
+      for (const auto &s : cycle)
+        kmax = std::max(kmax, s.stiffness), kmin = std::min(kmin, s.stiffness);
+      std::printf("PE 62/62 m2 b20 (%s): k_max = %.4g N/m, k_min = %.4g N/m\n",
+                  plane == PlaneCondition::plane_stress ? "plane stress" : "plane strain", kmax, kmin);
+      EXPECT_GT(kmax, 2e8);
+      EXPECT_LT(kmax, 8e8);
+      EXPECT_LT(kmin, 0.75 * kmax); // single-pair zone
+    }
+}
+
+TEST(GeneratedGeometry, TableInterpolationAndPeriodicity)
+{
+  const geometry::GearPair gp = pair(23, 69, 4e-3);
+  PairCompliance pc(involute_tooth(gp.gear(1)), involute_tooth(gp.gear(2)), {205e9, 0.3},
+                    {205e9, 0.3}, 70e-3, pair_line(gp));
+  const PairLine &l = pc.line();
+  for (double s : {0.01, 0.2, 0.5, 0.77, 0.99})
+    {
+      const double g = l.g_A + s * (l.g_E - l.g_A);
+      EXPECT_NEAR(pc(g, 5000) / pc.parts_exact(g, 5000).total(), 1.0, 1e-5) << s;
+    }
+  const MeshModel mm = pc.mesh_model();
+  const auto c = mesh_cycle(mm, 10870.0, 200, 2);
+  for (int i = 0; i < 100; ++i)
+    {
+      EXPECT_NEAR(c[i].stiffness / c[i + 100].stiffness, 1.0, 1e-12);
+      double F = 0;
+      for (double f : c[i].pair_load)
+        F += f;
+      EXPECT_NEAR(F / 10870.0, 1.0, 1e-12);
+    }
+}
+
+TEST(GeneratedGeometry, WeberCornellAgainstIso6336)
+{
+  // ISO 6336-1 (plane strain, mean over the mesh): c_gamma_alpha ~ 20 N/(mm um). Our
+  // Weber/Cornell model on the generated 23/69 pair in plane strain: report the ratio and
+  // require the same order (+-35 %). Plane stress must be softer. Positive pinion shift
+  // stiffens both (ISO q' shift dependence).
+  auto mean_k = [](const geometry::GearPair &gp, PlaneCondition plane) {
+    PairModelOptions o;
+    o.plane = plane;
+    PairCompliance pc(involute_tooth(gp.gear(1)), involute_tooth(gp.gear(2)), {206e9, 0.3},
+                      {206e9, 0.3}, 20e-3, pair_line(gp), o);
+    const auto c = mesh_cycle(pc.mesh_model(), 20e-3 * 300e3, 200); // 300 N/mm
+    double k = 0;
+    for (const auto &s : c)
+      k += s.stiffness;
+    return k / c.size() / 20e-3 / 1e9; // N/(mm um)
+  };
+  const geometry::GearPair gp = pair(23, 69, 4e-3);
+  const double k_strain = mean_k(gp, PlaneCondition::plane_strain);
+  const double k_stress = mean_k(gp, PlaneCondition::plane_stress);
+  iso6336::StiffnessInput in;
+  in.z1 = 23;
+  in.z2 = 69;
+  in.alpha_n = 20 * deg;
+  in.module = 4e-3;
+  in.eps_alpha = gp.contact_ratio();
+  const double c_ga = iso6336::mesh_stiffness(in).c_gamma_alpha;
+  std::printf("23/69 m4: Weber/Cornell mean k = %.2f (plane strain), %.2f (plane stress); ISO c_ga = %.2f N/(mm um)\n",
+              k_strain, k_stress, c_ga);
+  EXPECT_NEAR(k_strain / c_ga, 1.0, 0.35);
+  EXPECT_LT(k_stress, k_strain);
+}
+
+TEST(GeneratedGeometry, ShiftDependenceOfSingleStiffnessFollowsIso)
+{
+  // ISO 6336-1 q' describes the single-pair stiffness c'_th. Our Weber/Cornell single-pair
+  // stiffness at the pitch point (plane strain) on generated 23/69 pairs: it rises with the
+  // pinion shift x1 and with the wheel shift x2 as 1/q' does, and stays a near-constant
+  // fraction of c'_th (0.86 +- 0.06 measured: 0.82..0.88 over the shifts below).
+  auto kC = [](double x1, double x2) {
+    const geometry::GearPair gp = pair(23, 69, 4e-3, x1, x2);
+    PairModelOptions o;
+    o.plane = PlaneCondition::plane_strain;
+    PairCompliance pc(involute_tooth(gp.gear(1)), involute_tooth(gp.gear(2)), {206e9, 0.3},
+                      {206e9, 0.3}, 20e-3, pair_line(gp), o);
+    return 1.0 / pc(pc.line().g_C, 6000.0) / 20e-3 / 1e9; // N/(mm um)
+  };
+  double prev = 0;
+  for (double x1 : {-0.3, 0.0, 0.3})
+    {
+      const double k = kC(x1, 0.0), c_th = 1 / iso6336::q_prime(23, 69, x1, 0.0);
+      std::printf("23/69 x1 = %+.1f: single-pair k(C) = %.2f, ISO c'_th = %.2f N/(mm um), ratio %.3f\n",
+                  x1, k, c_th, k / c_th);
+      EXPECT_GT(k, prev);
+      EXPECT_NEAR(k / c_th, 0.86, 0.06);
+      prev = k;
+    }
+  EXPECT_GT(kC(0.0, 0.3), kC(0.0, 0.0));
+  EXPECT_LT(iso6336::q_prime(23, 69, 0.0, 0.3), iso6336::q_prime(23, 69, 0.0, 0.0));
+}
+
+TEST(GeneratedGeometry, Seed000SemiAnalyticalAgainstFullModel)
+{
+  // Seed 000 Table 1 pair (z 32/60, m 3, b 30, C_f 0.49, E 200 GPa; plane strain, the
+  // seed's 50/(2 pi)). The closed form (exponential thickness fit, monomial integrals,
+  // Hertz frozen at the pitch point) against the full Weber/Cornell model on the same
+  // generated teeth: the thesis reports <= 15 % along AB; we measure 12.8 % at most.
+  auto g = [](int z) {
+    geometry::GearParameters p = gear(z, 3e-3, 0.0, 30e-3);
+    p.thickness_allowance = 0.01 * pi * 3e-3; // C_f = 0.49
+    return geometry::ToothProfile::generate(p);
+  };
+  const geometry::GearPair gp(g(32), g(60), {});
+  PairModelOptions o;
+  o.plane = PlaneCondition::plane_strain;
+  o.odonnell = ODonnellConstant::seed000_50_over_2pi;
+  const InvoluteTooth t1 = involute_tooth(gp.gear(1)), t2 = involute_tooth(gp.gear(2));
+  const PairLine L = pair_line(gp);
+  const PairCompliance full(t1, t2, {200e9, 0.3}, {200e9, 0.3}, 30e-3, L, o);
+  const MeshModel mm = full.mesh_model();
+  const double F = 40.0 / L.rb1; // 40 N m
+  double km = 0;
+  const auto c = mesh_cycle(mm, F, 200);
+  for (const auto &s : c)
+    km += s.stiffness / c.size();
+  const double x = F / km;
+  const Seed000SemiAnalytical sa(t1, t2, {200e9, 0.3}, {200e9, 0.3}, 30e-3, L, km, o);
+  EXPECT_NEAR(sa.K1(0), t1.beam.thickness(0), 1e-15);
+  double emax = 0;
+  for (int i = 0; i <= 100; ++i)
+    {
+      const double gg = L.g_A + (L.g_E - L.g_A) * i / 100.0;
+      emax = std::max(emax, std::abs(sa.pair_stiffness(gg, x) * full(gg, km * x * 0.5) - 1));
+    }
+  std::printf("seed 000 semi-analytical pair stiffness: max error %.1f %% along AB\n", 100 * emax);
+  EXPECT_LT(emax, 0.15);
+  // Ricker weight (eq. 3.37, f_c = 2 f_m): 1 at the middle of AB and its minima
+  // -exp(-3)/2 = -0.025 at the edges of the single-contact zone (c_x x -> 0).
+  const double wA = (L.g_A - L.g_C) / L.rb1, wB = (L.g_E - L.g_C) / L.rb1, p = L.base_pitch / L.rb1;
+  const double w = 2 * p - (wB - wA);
+  EXPECT_NEAR(sa.ricker_weight(0.5 * (wA + wB), 1e-15), 1.0, 1e-12);
+  EXPECT_NEAR(sa.ricker_weight(0.5 * (wA + wB) + 0.5 * w, 1e-15), -0.5 * std::exp(-3.0), 1e-9);
+  // The Ricker load sharing against the line-of-action load sharing of the full model
+  // (which has no corner contact): close in the double-contact zones (< 10 %), far off
+  // inside the single-contact zone, where the wavelet phases the second pair in gradually.
+  double dmax = 0, smax = 0;
+  for (int i = 0; i < 400; ++i)
+    {
+      const double phi = 0.5 * (wA + wB) - 0.5 * p + p * (i + 0.5) / 400;
+      const double e = std::abs(sa.load(phi, x) / load_at_compression(mm, phi, x) - 1);
+      (phi > wB - p && phi < wA + p ? smax : dmax) = std::max(phi > wB - p && phi < wA + p ? smax : dmax, e);
+    }
+  std::printf("seed 000 Ricker load sharing: max error %.1f %% (double-contact zones), %.1f %% (single)\n",
+              100 * dmax, 100 * smax);
+  EXPECT_LT(dmax, 0.10);
+}
