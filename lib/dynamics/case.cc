@@ -1,0 +1,173 @@
+#include "dynamics/case.h"
+
+#include "base/errors.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace gearfem::dynamics
+{
+  namespace
+  {
+    /// Area of an unshifted involute tooth between the root circle r - 1.25 m and the tip
+    /// circle [m^2]: thickness s(r) = 2 r (psi/2 + inv alpha - inv alpha_r) on the involute,
+    /// radial flanks below the base circle (midpoint rule, 400 strips).
+    double tooth_area(int z, double m, double alpha, double addendum, double cf)
+    {
+      const double r = m * z / 2, rb = r * std::cos(alpha);
+      const double rf = r - 1.25 * m, ra = r + addendum * m;
+      const double psi = 2 * M_PI * cf / z; // angular thickness at the reference circle
+      auto inv = [](double a) { return std::tan(a) - a; };
+      auto s = [&](double rr) {
+        const double q = std::max(rr, rb);
+        const double ar = std::acos(rb / q);
+        return std::max(0.0, 2 * q * (psi / 2 + inv(alpha) - inv(ar)));
+      };
+      const int n = 400;
+      double A = 0;
+      for (int i = 0; i < n; ++i)
+        A += s(rf + (ra - rf) * (i + 0.5) / n) * (ra - rf) / n;
+      return A;
+    }
+
+    std::string fmt(const std::string &name, double v, const std::string &unit)
+    {
+      std::ostringstream s;
+      s.precision(6);
+      s << name << " = " << v << (unit.empty() ? "" : " " + unit);
+      return s.str();
+    }
+  } // namespace
+
+  void DynamicsCase::check() const
+  {
+    integrator.check();
+    response.check();
+    if (!(zeta >= 0))
+      throw InputError("Dynamics/Operating/Damping ratio", to_string_g(zeta), ">= 0");
+    if (!(ks_zeta >= 0))
+      throw InputError("Dynamics/Kahraman-Singh/Damping ratio", to_string_g(ks_zeta), ">= 0");
+    if (run_sweep && !(sweep_min < sweep_max))
+      throw InputError("Dynamics/Analysis/Sweep minimum speed",
+                       to_string_g(sweep_min) + " (maximum " + to_string_g(sweep_max) + ")",
+                       "< Sweep maximum speed");
+    if (run_sweep)
+      require_greater("Dynamics/Analysis/Number of speeds", sweep_points, 1.0);
+    require_greater("Dynamics/Analysis/Threads", threads, 0.0);
+    if (model != ModelKind::kahraman_singh)
+      {
+        require_greater("Dynamics/Operating/Pinion speed", speed, 0.0, "rad/s");
+        require_greater("Dynamics/Pair/Face width", face_width, 0.0, "m");
+        require_greater("Dynamics/Mesh force/Single-pair stiffness", single_pair_stiffness, 0.0);
+        require_greater("Dynamics/Mesh force/Double-pair factor", double_pair_factor, 0.0);
+        if (law == LawKind::ste && ste_theta.size() < 2)
+          throw InputError("Dynamics/Mesh force/STE file", "(empty)",
+                           "a CSV with >= 2 rows: position [deg], STE [um]");
+      }
+    else
+      require_greater("Dynamics/Kahraman-Singh/Frequency", ks_frequency, 0.0);
+  }
+
+  PairData DynamicsCase::pair() const
+  {
+    return standard_pair(z1, z2, module, alpha, addendum, thickness1, thickness2, delta_a);
+  }
+
+  std::unique_ptr<MeshModel> build_model(const DynamicsCase &c, std::vector<std::string> *notes)
+  {
+    c.check();
+    auto note = [&](const std::string &s) {
+      if (notes)
+        notes->push_back(s);
+    };
+    if (c.model == ModelKind::kahraman_singh)
+      {
+        ContactLogic contact;
+        contact.backlash = 2.0; // dead zone of half-width 1
+        DteModel::Parameters p;
+        p.mass = 1.0, p.static_force = c.ks_force, p.speed = c.ks_frequency, p.zeta = c.ks_zeta;
+        p.damping_only_in_contact = c.damping_only_in_contact;
+        note("Kahraman-Singh dimensionless model: kbar = 1, m = 1, backlash 2 (x = delta + 1)");
+        return std::make_unique<DteModel>(
+          std::make_unique<FourierStiffnessLaw>(1.0, 1, c.ks_cos), contact, p);
+      }
+
+    const PairData pair = c.pair();
+    const double eps = pair.contact_ratio;
+    const double ks = c.single_pair_stiffness * c.face_width;
+    std::unique_ptr<MeshForceLaw> law;
+    const double kmean_iso = ks * (0.75 * eps + 0.25); // ISO 6336-1 c_gamma_alpha b
+    switch (c.law)
+      {
+        case LawKind::piecewise_constant:
+          law = std::make_unique<PiecewiseConstantLaw>(ks, c.double_pair_factor * ks, c.z1, eps,
+                                                       pair.theta_A);
+          break;
+        case LawKind::fourier:
+          law = std::make_unique<FourierStiffnessLaw>(kmean_iso, c.z1, c.fourier_cos, c.fourier_sin);
+          break;
+        case LawKind::ste:
+          law = std::make_unique<SteExcitationLaw>(kmean_iso, c.ste_theta, c.ste_values,
+                                                   2 * M_PI / c.z1);
+          break;
+        case LawKind::external:
+          if (!c.external_law)
+            throw InputError("Dynamics/Mesh force/Law", "external", "a law provided by the caller");
+          law = c.external_law->clone();
+          break;
+      }
+    ContactLogic contact;
+    contact.backlash = c.backlash >= 0 ? c.backlash : pair.backlash;
+    contact.reverse_mapping = c.reverse_mapping;
+    contact.reverse_offset = pair.thickness_angle1;
+
+    const double r1 = c.module * c.z1 / 2, r2 = c.module * c.z2 / 2;
+    auto cylinder = [&](double r) { return 0.5 * M_PI * c.density * c.face_width * std::pow(r, 4); };
+    double J1 = c.inertia1 > 0 ? c.inertia1 : cylinder(r1);
+    double J2 = c.inertia2 > 0 ? c.inertia2 : cylinder(r2);
+    note(fmt("contact ratio", eps, ""));
+    note(fmt("backlash", contact.backlash * 1e6, "um"));
+    note(fmt("base radii r_b1", pair.r_b1 * 1e3, "mm") + ", " + fmt("r_b2", pair.r_b2 * 1e3, "mm"));
+    note(fmt("start of contact theta_A", pair.theta_A * 180 / M_PI, "deg"));
+    note(fmt("inertias J1", J1, "kg m^2") + ", " + fmt("J2", J2, "kg m^2"));
+    if (c.tooth_mass)
+      {
+        const double m1 = c.density * c.face_width *
+                          tooth_area(c.z1, c.module, c.alpha, c.addendum, c.thickness1);
+        const double m2 = c.density * c.face_width *
+                          tooth_area(c.z2, c.module, c.alpha, c.addendum, c.thickness2);
+        const double Jt1 = tooth_inertia(m1, r1, eps, c.tooth_mass_energy_weighting);
+        const double Jt2 = tooth_inertia(m2, r2, eps, c.tooth_mass_energy_weighting);
+        note(fmt("tooth inertia J_tooth1", Jt1, "kg m^2") + ", " +
+             fmt("J_tooth2", Jt2, "kg m^2") + " (" + to_string_g(100 * Jt1 / J1) + " % of J1, " +
+             to_string_g(100 * Jt2 / J2) + " % of J2)");
+        J1 += Jt1, J2 += Jt2;
+      }
+    note(fmt("mean mesh stiffness per face width", law->mean_stiffness() / c.face_width / 1e9,
+             "N/(mm um)"));
+
+    if (c.model == ModelKind::dte)
+      {
+        DteModel::Parameters p;
+        p.mass = J1 * J2 / (J2 * pair.r_b1 * pair.r_b1 + J1 * pair.r_b2 * pair.r_b2);
+        p.static_force = c.input_torque / pair.r_b1;
+        p.speed = c.speed;
+        p.zeta = c.zeta;
+        p.damping_only_in_contact = c.damping_only_in_contact;
+        auto m = std::make_unique<DteModel>(std::move(law), contact, p);
+        note(fmt("equivalent mass", m->equivalent_mass(), "kg"));
+        note(fmt("linear natural frequency", m->linear_natural_frequency(), "Hz"));
+        return m;
+      }
+    TorsionalModel::Parameters p;
+    p.inertia1 = J1, p.inertia2 = J2;
+    p.base_radius1 = pair.r_b1, p.base_radius2 = pair.r_b2;
+    p.input_torque = c.input_torque, p.output_torque = c.output_torque;
+    p.ramp_time = c.ramp_time, p.speed = c.speed, p.speed_source = c.speed_source;
+    p.zeta = c.zeta, p.damping_only_in_contact = c.damping_only_in_contact;
+    auto m = std::make_unique<TorsionalModel>(std::move(law), contact, p);
+    note(fmt("equivalent mass", m->equivalent_mass(), "kg"));
+    note(fmt("linear natural frequency", m->linear_natural_frequency(), "Hz"));
+    return m;
+  }
+} // namespace gearfem::dynamics

@@ -1,0 +1,351 @@
+#include "dynamics/mesh_force.h"
+
+#include "base/errors.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gearfem::dynamics
+{
+  namespace
+  {
+    constexpr double two_pi = 6.283185307179586476925;
+  }
+
+  ZoneInfo locate_zone(const std::vector<double> &breaks, double period, double theta)
+  {
+    ZoneInfo z;
+    const std::size_t n = breaks.size();
+    if (n == 0)
+      return z;
+    const double k = std::floor(theta / period);
+    const double r = theta - k * period;
+    const std::size_t j = std::upper_bound(breaks.begin(), breaks.end(), r) - breaks.begin();
+    z.zone = static_cast<int>(j % n);
+    z.prev = j == 0 ? (k - 1) * period + breaks[n - 1] : k * period + breaks[j - 1];
+    z.next = j == n ? (k + 1) * period + breaks[0] : k * period + breaks[j];
+    return z;
+  }
+
+  // ---------------------------------------------------------------- Fourier
+  FourierStiffnessLaw::FourierStiffnessLaw(double kbar, int z1, std::vector<double> a,
+                                           std::vector<double> b)
+    : kbar_(kbar)
+    , period_(two_pi / z1)
+    , z_(z1)
+    , a_(std::move(a))
+    , b_(std::move(b))
+  {
+    require_greater("Mesh force/Mean stiffness", kbar, 0.0);
+    require_greater("Pinion teeth", z1, 0.0);
+    double s = 0;
+    for (double v : a_)
+      s += std::abs(v);
+    for (double v : b_)
+      s += std::abs(v);
+    if (s >= 1.0)
+      throw InputError("Mesh force/Fourier coefficients", "sum |a_n| + |b_n| = " + to_string_g(s),
+                       "< 1", "the stiffness must stay positive");
+  }
+
+  double FourierStiffnessLaw::stiffness(double theta) const
+  {
+    double k = 1.0;
+    const double w = z_ * theta;
+    for (std::size_t n = 0; n < a_.size(); ++n)
+      k += a_[n] * std::cos((n + 1) * w);
+    for (std::size_t n = 0; n < b_.size(); ++n)
+      k += b_[n] * std::sin((n + 1) * w);
+    return kbar_ * k;
+  }
+
+  double FourierStiffnessLaw::force(double theta, double delta, int) const
+  {
+    return stiffness(theta) * delta;
+  }
+
+  // ---------------------------------------------------------------- piecewise constant
+  PiecewiseConstantLaw::PiecewiseConstantLaw(double k_single, double k_double, int z1,
+                                             double contact_ratio, double theta_A)
+    : period_(two_pi / z1)
+    , eps_(contact_ratio)
+    , theta_A_(theta_A)
+    , k_single_(k_single)
+    , k_double_(k_double)
+  {
+    require_greater("Mesh force/Single-pair stiffness", k_single, 0.0, "N/m");
+    require_greater("Mesh force/Double-pair stiffness", k_double, 0.0, "N/m");
+    require_range("Contact ratio", contact_ratio, 1.0, 1.999999);
+    auto wrap = [&](double v) { return v - period_ * std::floor(v / period_); };
+    const double bA = wrap(theta_A), bB = wrap(theta_A + (contact_ratio - 1.0) * period_);
+    if (contact_ratio <= 1.0 + 1e-12)
+      {
+        breaks_ = {};
+        k_      = {k_single};
+        pairs_  = {1};
+        return;
+      }
+    // Zone j is the interval [breaks[j-1], breaks[j]) (zone 0 wraps around).
+    breaks_ = {std::min(bA, bB), std::max(bA, bB)};
+    // The middle interval [min, max) is double contact iff bA < bB.
+    const bool middle_double = bA < bB;
+    k_     = {middle_double ? k_single : k_double, middle_double ? k_double : k_single};
+    pairs_ = {middle_double ? 1 : 2, middle_double ? 2 : 1};
+  }
+
+  double PiecewiseConstantLaw::mean_stiffness() const
+  {
+    return (eps_ - 1.0) * k_double_ + (2.0 - eps_) * k_single_;
+  }
+
+  int PiecewiseConstantLaw::pairs_in_contact(double theta) const
+  {
+    return pairs_[locate_zone(breaks_, period_, theta).zone];
+  }
+
+  // ---------------------------------------------------------------- tables
+  void MeshTable::check(const std::string &expected_hash) const
+  {
+    const bool torque = kind == Kind::torque_vs_compression;
+    if (theta.size() < 2)
+      throw InputError("mesh table/theta axis", std::to_string(theta.size()) + " nodes",
+                       ">= 2 nodes", "missing or too short theta axis");
+    if (second.size() < 2)
+      throw InputError(std::string("mesh table/") + (torque ? "delta" : "load") + " axis",
+                       std::to_string(second.size()) + " nodes", ">= 2 nodes",
+                       "missing or too short second axis");
+    if (values.size() != theta.size() * second.size())
+      throw InputError("mesh table/values", std::to_string(values.size()) + " values",
+                       std::to_string(theta.size() * second.size()) + " (theta x second axis)");
+    if (theta_unit != "rad")
+      throw InputError("mesh table/theta unit", theta_unit, "rad");
+    if (second_unit != (torque ? "m" : "N"))
+      throw InputError("mesh table/second-axis unit", second_unit, torque ? "m" : "N");
+    if (value_unit != (torque ? "N*m" : "N/m"))
+      throw InputError("mesh table/value unit", value_unit, torque ? "N*m" : "N/m");
+    for (std::size_t i = 1; i < theta.size(); ++i)
+      if (!(theta[i] > theta[i - 1]))
+        throw InputError("mesh table/theta axis", "not strictly increasing", "increasing");
+    for (std::size_t i = 1; i < second.size(); ++i)
+      if (!(second[i] > second[i - 1]))
+        throw InputError("mesh table/second axis", "not strictly increasing", "increasing");
+    if (second[0] < 0)
+      throw InputError("mesh table/second axis", to_string_g(second[0]), ">= 0");
+    if (!(period > 0) || theta.back() - theta.front() >= period)
+      throw InputError("mesh table/period", to_string_g(period),
+                       "> 0 and longer than the theta axis span");
+    if (!(base_radius > 0))
+      throw InputError("mesh table/base radius", to_string_g(base_radius), "> 0 m");
+    for (double v : values)
+      if (!std::isfinite(v) || (!torque && v <= 0))
+        throw InputError("mesh table/values", to_string_g(v),
+                         torque ? "finite" : "finite and > 0");
+    if (!expected_hash.empty() && geometry_hash != expected_hash)
+      throw InputError("mesh table/geometry hash", geometry_hash, expected_hash,
+                       "the table was computed for another gear pair");
+  }
+
+  void MeshTable::require_covers_load(double F) const
+  {
+    if (kind == Kind::stiffness_vs_load)
+      {
+        if (F < second.front() || F > second.back())
+          throw InputError("mesh table/load range", to_string_g(F) + " N",
+                           "[" + to_string_g(second.front()) + ", " + to_string_g(second.back()) +
+                             "] N",
+                           "the table does not cover the requested load");
+        return;
+      }
+    // Torque table: the static torque F r_b1 must lie below the smallest row maximum.
+    double tmax = 1e300;
+    for (std::size_t i = 0; i < theta.size(); ++i)
+      tmax = std::min(tmax, value(i, second.size() - 1));
+    if (F * base_radius > tmax)
+      throw InputError("mesh table/load range", to_string_g(F * base_radius) + " N*m",
+                       "<= " + to_string_g(tmax) + " N*m",
+                       "the table does not cover the requested load");
+  }
+
+  TableLaw::TableLaw(const MeshTable &t, ThetaInterpolation interpolation)
+    : interp_(interpolation)
+    , period_(t.period)
+  {
+    t.check();
+    nt_ = t.theta.size();
+    theta0_ = t.theta.front();
+    dtheta_ = t.period / nt_;
+    for (std::size_t i = 1; i < nt_; ++i)
+      if (std::abs(t.theta[i] - t.theta[0] - i * dtheta_) > 1e-9 * t.period)
+        throw InputError("mesh table/theta axis", "non-uniform",
+                         "uniform spacing period/n (periodic grid)");
+    if (t.kind == MeshTable::Kind::torque_vs_compression)
+      {
+        d_ = t.second;
+        F_.resize(t.values.size());
+        for (std::size_t k = 0; k < F_.size(); ++k)
+          F_[k] = t.values[k] / t.base_radius;
+        if (d_[0] > 0)
+          throw InputError("mesh table/delta axis", to_string_g(d_[0]), "starts at 0");
+      }
+    else
+      {
+        // delta(theta, F) = F / k(theta, F), then F on a common delta grid.
+        const std::size_t nf = t.second.size();
+        double dmin = 1e300;
+        for (std::size_t i = 0; i < nt_; ++i)
+          dmin = std::min(dmin, t.second[nf - 1] / t.value(i, nf - 1));
+        const std::size_t nd = 2 * nf;
+        d_.resize(nd);
+        for (std::size_t j = 0; j < nd; ++j)
+          d_[j] = dmin * j / (nd - 1);
+        F_.resize(nt_ * nd);
+        for (std::size_t i = 0; i < nt_; ++i)
+          {
+            std::vector<double> dd(nf + 1), ff(nf + 1);
+            dd[0] = 0, ff[0] = 0;
+            for (std::size_t j = 0; j < nf; ++j)
+              dd[j + 1] = t.second[j] / t.value(i, j), ff[j + 1] = t.second[j];
+            for (std::size_t j = 1; j <= nf; ++j)
+              if (!(dd[j] > dd[j - 1]))
+                throw InputError("mesh table/values", "F/k not increasing in F",
+                                 "a monotone force-deflection curve");
+            for (std::size_t j = 0; j < nd; ++j)
+              {
+                const std::size_t q =
+                  std::min<std::size_t>(std::upper_bound(dd.begin(), dd.end(), d_[j]) -
+                                          dd.begin(),
+                                        nf);
+                const double w = (d_[j] - dd[q - 1]) / (dd[q] - dd[q - 1]);
+                F_[i * nd + j] = ff[q - 1] + w * (ff[q] - ff[q - 1]);
+              }
+          }
+      }
+    // Fritsch-Carlson monotone slopes in theta (periodic), per delta column.
+    const std::size_t nd = d_.size();
+    slope_.assign(F_.size(), 0.0);
+    for (std::size_t j = 0; j < nd; ++j)
+      for (std::size_t i = 0; i < nt_; ++i)
+        {
+          const double fm = F_[((i + nt_ - 1) % nt_) * nd + j], f0 = F_[i * nd + j],
+                       fp = F_[((i + 1) % nt_) * nd + j];
+          const double s0 = (f0 - fm) / dtheta_, s1 = (fp - f0) / dtheta_;
+          slope_[i * nd + j] = (s0 * s1 <= 0) ? 0.0 : 2.0 / (1.0 / s0 + 1.0 / s1); // harmonic
+        }
+    // Mean stiffness for damping: mean secant at mid-range of the delta axis.
+    const std::size_t jm = std::max<std::size_t>(1, nd / 2);
+    double s = 0;
+    for (std::size_t i = 0; i < nt_; ++i)
+      s += F_[i * nd + jm] / d_[jm];
+    kbar_ = s / nt_;
+  }
+
+  TableLaw::TableLaw(const TableLaw &o)
+    : MeshForceLaw(o)
+    , interp_(o.interp_)
+    , period_(o.period_)
+    , theta0_(o.theta0_)
+    , dtheta_(o.dtheta_)
+    , d_(o.d_)
+    , F_(o.F_)
+    , slope_(o.slope_)
+    , nt_(o.nt_)
+    , kbar_(o.kbar_)
+    , out_(0)
+  {}
+
+  double TableLaw::interp_theta(std::size_t j, double theta) const
+  {
+    const std::size_t nd = d_.size();
+    double u = (theta - theta0_) / dtheta_;
+    u -= nt_ * std::floor(u / nt_);
+    std::size_t i = static_cast<std::size_t>(u);
+    if (i >= nt_)
+      i = nt_ - 1;
+    const double w = u - i;
+    const std::size_t i1 = (i + 1) % nt_;
+    const double f0 = F_[i * nd + j], f1 = F_[i1 * nd + j];
+    if (interp_ == ThetaInterpolation::linear)
+      return f0 + w * (f1 - f0);
+    const double m0 = slope_[i * nd + j] * dtheta_, m1 = slope_[i1 * nd + j] * dtheta_;
+    const double w2 = w * w, w3 = w2 * w;
+    return (2 * w3 - 3 * w2 + 1) * f0 + (w3 - 2 * w2 + w) * m0 + (-2 * w3 + 3 * w2) * f1 +
+           (w3 - w2) * m1;
+  }
+
+  double TableLaw::force(double theta, double delta, int) const
+  {
+    const std::size_t nd = d_.size();
+    std::size_t j;
+    if (delta <= d_[0])
+      j = 0; // extension below 0: linear from the first cell (mode freezing only)
+    else if (delta >= d_[nd - 1])
+      {
+        j = nd - 2;
+        if (delta > d_[nd - 1])
+          out_.fetch_add(1, std::memory_order_relaxed);
+      }
+    else
+      j = std::upper_bound(d_.begin(), d_.end(), delta) - d_.begin() - 1;
+    const double Fa = interp_theta(j, theta), Fb = interp_theta(j + 1, theta);
+    return Fa + (delta - d_[j]) * (Fb - Fa) / (d_[j + 1] - d_[j]);
+  }
+
+  double TableLaw::mean_secant_stiffness(double F) const
+  {
+    double s = 0;
+    const int n = 64;
+    for (int i = 0; i < n; ++i)
+      {
+        const double th = theta0_ + period_ * i / n;
+        double lo = 0, hi = d_.back();
+        for (int it = 0; it < 100; ++it)
+          {
+            const double m = 0.5 * (lo + hi);
+            (force(th, m, 0) < F ? lo : hi) = m;
+          }
+        s += F / (0.5 * (lo + hi));
+      }
+    return s / n;
+  }
+
+  // ---------------------------------------------------------------- STE excitation
+  SteExcitationLaw::SteExcitationLaw(double kbar, std::vector<double> theta,
+                                     std::vector<double> ste, double period)
+    : kbar_(kbar)
+    , period_(period)
+    , th_(std::move(theta))
+    , e_(std::move(ste))
+  {
+    require_greater("Mesh force/Mean stiffness", kbar, 0.0, "N/m");
+    if (th_.size() < 2 || th_.size() != e_.size())
+      throw InputError("STE table", std::to_string(th_.size()) + " angles, " +
+                                      std::to_string(e_.size()) + " values",
+                       ">= 2 nodes, equal sizes");
+    double mean = 0;
+    for (double v : e_)
+      mean += v;
+    mean /= e_.size();
+    for (double &v : e_)
+      v -= mean;
+  }
+
+  double SteExcitationLaw::fluctuation(double theta) const
+  {
+    const double t0 = th_.front();
+    double u = theta - t0;
+    u -= period_ * std::floor(u / period_);
+    const double t = t0 + u;
+    std::size_t j = std::upper_bound(th_.begin(), th_.end(), t) - th_.begin();
+    // Periodic wrap between the last node and the first node + period.
+    const double xa = j == 0 ? th_.back() - period_ : th_[j - 1];
+    const double ya = j == 0 ? e_.back() : e_[j - 1];
+    const double xb = j == th_.size() ? th_.front() + period_ : th_[j];
+    const double yb = j == th_.size() ? e_.front() : e_[j];
+    return ya + (t - xa) * (yb - ya) / (xb - xa);
+  }
+
+  double SteExcitationLaw::force(double theta, double delta, int) const
+  {
+    return kbar_ * (delta - fluctuation(theta));
+  }
+} // namespace gearfem::dynamics

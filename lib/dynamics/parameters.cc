@@ -1,0 +1,247 @@
+#include "dynamics/parameters.h"
+
+#include "base/errors.h"
+#include "base/table.h"
+#include "base/units.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+
+namespace gearfem::dynamics
+{
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::Selection;
+
+  namespace
+  {
+    std::vector<double> doubles(const std::string &s)
+    {
+      std::vector<double> v;
+      for (const auto &x : dealii::Utilities::split_string_list(s, ','))
+        if (!x.empty())
+          v.push_back(dealii::Utilities::string_to_double(x));
+      return v;
+    }
+  } // namespace
+
+  void declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Dynamics");
+    prm.declare_entry("Model", "torsional", Selection("DTE|torsional|Kahraman-Singh"),
+                      "DTE: 1-DOF relative model with a speed source; torsional: 2-DOF model "
+                      "(seed 000 4.1-4.2); Kahraman-Singh: the dimensionless 1-DOF form "
+                      "(Kahraman & Singh 1990).");
+    prm.declare_entry("Analysis", "response", Selection("response|sweep|both"),
+                      "Time response at the pinion speed, up/down speed sweep, or both.");
+
+    prm.enter_subsection("Pair");
+    prm.declare_entry("Pinion teeth", "20", Integer(5), "z1 [-].");
+    prm.declare_entry("Gear teeth", "40", Integer(5), "z2 [-].");
+    prm.declare_entry("Module", "2.5", Double(0), "Module m. Units: mm.");
+    prm.declare_entry("Pressure angle", "20", Double(5, 40), "Rack pressure angle. Units: deg.");
+    prm.declare_entry("Addendum coefficient", "1.0", Double(0.5, 1.5), "h_a / m [-].");
+    prm.declare_entry("Face width", "30", Double(0), "Face width b. Units: mm.");
+    prm.declare_entry("Pinion thickness coefficient", "0.5", Double(0.3, 0.6),
+                      "C_f: tooth thickness at the reference circle / (pi m) [-]; 0.5 is "
+                      "backlash-free (seed 000 uses 0.49).");
+    prm.declare_entry("Gear thickness coefficient", "0.5", Double(0.3, 0.6), "As above, gear [-].");
+    prm.declare_entry("Centre distance change", "0", Double(-10, 10),
+                      "Operating centre distance minus m (z1 + z2)/2. Units: mm.");
+    prm.declare_entry("Backlash", "-1", Double(),
+                      "Normal backlash along the line of action; < 0: from the pair (seed 000 "
+                      "eq. 2.52). Units: um.");
+    prm.declare_entry("Density", "7850", Double(0), "Units: kg/m^3.");
+    prm.declare_entry("Young modulus", "206", Double(1), "E (analytical table law). Units: GPa.");
+    prm.declare_entry("Poisson ratio", "0.3", Double(0, 0.5), "nu (analytical table law) [-].");
+    prm.declare_entry("Pinion inertia", "0", Double(0),
+                      "I1; 0: solid cylinder of the pitch diameter. Units: kg m^2.");
+    prm.declare_entry("Gear inertia", "0", Double(0), "I2; 0: as above. Units: kg m^2.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh force");
+    prm.declare_entry("Law", "piecewise constant",
+                      Selection("piecewise constant|Fourier|STE|analytical table"),
+                      "piecewise constant: k_single / k_double zones from the contact ratio; "
+                      "Fourier: kbar (1 + sum a_n cos(n z1 theta) + b_n sin); STE: kbar (delta - "
+                      "e(theta)); analytical table: seed 000 torque table T(theta, delta) of the "
+                      "Weber/Cornell model (lib/analytical) on the generated pair. (Tables from "
+                      "the calibration HDF5 files: not yet wired.)");
+    prm.declare_entry("Theta interpolation", "linear", Selection("linear|monotone cubic"),
+                      "Table laws: bilinear, or monotone cubic (Fritsch-Carlson) in theta [-].");
+    prm.declare_entry("Single-pair stiffness", "14", Double(0),
+                      "c' per unit face width (ISO 6336-1 rule of thumb 14). Units: N/(mm um).");
+    prm.declare_entry("Double-pair factor", "1.75", Double(1, 3),
+                      "k_double / k_single [-]; 1.75 makes the mean equal to ISO c_gamma_alpha.");
+    prm.declare_entry("Fourier cosine coefficients", "-0.1", List(Double()),
+                      "a_n relative to kbar [-]; kbar = c'(0.75 eps + 0.25) b (ISO c_gamma_alpha).");
+    prm.declare_entry("Fourier sine coefficients", "", List(Double()), "b_n relative to kbar [-].");
+    prm.declare_entry("Reverse-flank mapping", "true", Bool(),
+                      "Back contact at theta_r = thickness angle - theta (seed 000 4.11) [-].");
+    prm.declare_entry("STE file", "", dealii::Patterns::Anything(),
+                      "CSV with header; columns: mesh position [deg], STE [um] over one mesh period.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Operating");
+    prm.declare_entry("Input torque", "100", Double(0), "T_in on the pinion. Units: N m.");
+    prm.declare_entry("Output torque", "-1", Double(),
+                      "T_out on the gear; < 0: balanced, T_in r_b2 / r_b1. Units: N m.");
+    prm.declare_entry("Pinion speed", "1528", Double(0), "Units: rpm.");
+    prm.declare_entry("Torque ramp time", "0", Double(0), "Linear start-up ramp. Units: ms.");
+    prm.declare_entry("Speed source", "false", Bool(), "Impose the pinion speed (2-DOF model) [-].");
+    prm.declare_entry("Damping ratio", "0.02", Double(), "zeta: c = 2 zeta sqrt(kbar m_eq) [-].");
+    prm.declare_entry("Damping only in contact", "false", Bool(), "[-]");
+    prm.declare_entry("Tooth mass", "false", Bool(), "Add the equivalent tooth inertia (seed 004) [-].");
+    prm.declare_entry("Tooth mass weighting", "linear", Selection("linear|quadratic"),
+                      "(delta/delta0) as in seed 004, or (delta/delta0)^2 (kinetic energy) [-].");
+    prm.declare_entry("Start from rest deflection", "false", Bool(),
+                      "true: delta(0) = 0 (zero initial conditions); false: static deflection [-].");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Kahraman-Singh");
+    prm.declare_entry("Damping ratio", "0.05", Double(), "zeta [-].");
+    prm.declare_entry("Mean force", "0.1", Double(0), "F_m [-].");
+    prm.declare_entry("Cosine coefficients", "-0.2, -0.1, -0.05", List(Double()), "k(t) = 1 + sum a_n cos(n W t) [-].");
+    prm.declare_entry("Frequency", "0.9", Double(0), "Omega of the time response [-].");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Integrator");
+    prm.declare_entry("Method", "RK4", Selection("RK4|DOPRI5|SDIRK3"), "Stepper.");
+    prm.declare_entry("Steps per period", "128", Integer(), "Fixed-step methods: steps per mesh period [-].");
+    prm.declare_entry("Relative tolerance", "1e-8", Double(), "DOPRI5 [-].");
+    prm.declare_entry("Absolute tolerance", "1e-14", Double(),
+                      "DOPRI5; state units (m, m/s, rad; dimensionless in Kahraman-Singh mode).");
+    prm.declare_entry("Event location", "true", Bool(), "Locate contact and stiffness events [-].");
+    prm.declare_entry("Event tolerance", "1e-12", Double(), "Units: s (dimensionless in KS mode).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Analysis");
+    prm.declare_entry("Periods per speed", "300", Integer(), "Transient + record, at most [-].");
+    prm.declare_entry("Recorded periods", "32", Integer(), "Steady-state record [-].");
+    prm.declare_entry("Samples per period", "64", Integer(), "Output samples per mesh period [-].");
+    prm.declare_entry("Steady-state tolerance", "1e-5", Double(),
+                      "Poincare-sample change relative to the response scale [-].");
+    prm.declare_entry("Sweep minimum speed", "500", Double(),
+                      "Pinion speed. Units: rpm (Omega [-] in Kahraman-Singh mode).");
+    prm.declare_entry("Sweep maximum speed", "10000", Double(), "Units: rpm (Omega [-] in KS mode).");
+    prm.declare_entry("Number of speeds", "100", Integer(), "Per direction [-].");
+    prm.declare_entry("Threads", "2", Integer(), "Threads for the up/down sweeps [-].");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  DynamicsCase parse_parameters(dealii::ParameterHandler &prm, const std::string &input_dir)
+  {
+    using namespace gearfem::units;
+    DynamicsCase c;
+    prm.enter_subsection("Dynamics");
+    const std::string model = prm.get("Model");
+    c.model = model == "DTE" ? ModelKind::dte :
+              (model == "torsional" ? ModelKind::torsional : ModelKind::kahraman_singh);
+    const std::string analysis = prm.get("Analysis");
+    c.run_response = analysis != "sweep";
+    c.run_sweep = analysis != "response";
+
+    prm.enter_subsection("Pair");
+    c.z1 = prm.get_integer("Pinion teeth");
+    c.z2 = prm.get_integer("Gear teeth");
+    c.module = prm.get_double("Module") * mm;
+    c.alpha = prm.get_double("Pressure angle") * deg;
+    c.addendum = prm.get_double("Addendum coefficient");
+    c.face_width = prm.get_double("Face width") * mm;
+    c.thickness1 = prm.get_double("Pinion thickness coefficient");
+    c.thickness2 = prm.get_double("Gear thickness coefficient");
+    c.delta_a = prm.get_double("Centre distance change") * mm;
+    const double b = prm.get_double("Backlash");
+    c.backlash = b < 0 ? -1.0 : b * um;
+    c.density = prm.get_double("Density");
+    c.youngs_modulus = prm.get_double("Young modulus") * GPa;
+    c.poisson_ratio = prm.get_double("Poisson ratio");
+    c.inertia1 = prm.get_double("Pinion inertia");
+    c.inertia2 = prm.get_double("Gear inertia");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh force");
+    const std::string law = prm.get("Law");
+    c.law = law == "Fourier" ? LawKind::fourier :
+            law == "STE"     ? LawKind::ste :
+            law == "analytical table" ? LawKind::external : LawKind::piecewise_constant;
+    c.theta_interpolation = prm.get("Theta interpolation") == "linear" ?
+                              ThetaInterpolation::linear :
+                              ThetaInterpolation::monotone_cubic;
+    c.single_pair_stiffness = prm.get_double("Single-pair stiffness") * N_per_mm_um;
+    c.double_pair_factor = prm.get_double("Double-pair factor");
+    c.fourier_cos = doubles(prm.get("Fourier cosine coefficients"));
+    c.fourier_sin = doubles(prm.get("Fourier sine coefficients"));
+    c.reverse_mapping = prm.get_bool("Reverse-flank mapping");
+    const std::string ste = prm.get("STE file");
+    if (c.law == LawKind::ste)
+      {
+        std::filesystem::path f(ste);
+        if (f.is_relative() && !input_dir.empty())
+          f = std::filesystem::path(input_dir) / f;
+        if (ste.empty() || !std::filesystem::is_regular_file(f))
+          throw InputError("Dynamics/Mesh force/STE file", ste.empty() ? "(empty)" : f.string(),
+                           "an existing CSV file: position [deg], STE [um]");
+        for (const auto &row : read_csv_numbers(f))
+          {
+            if (row.size() < 2)
+              throw InputError("Dynamics/Mesh force/STE file", f.string(), ">= 2 columns");
+            c.ste_theta.push_back(row[0] * deg);
+            c.ste_values.push_back(row[1] * um);
+          }
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Operating");
+    c.input_torque = prm.get_double("Input torque");
+    c.output_torque = prm.get_double("Output torque");
+    c.speed = prm.get_double("Pinion speed") * rpm;
+    c.ramp_time = prm.get_double("Torque ramp time") * 1e-3;
+    c.speed_source = prm.get_bool("Speed source");
+    c.zeta = prm.get_double("Damping ratio");
+    c.damping_only_in_contact = prm.get_bool("Damping only in contact");
+    c.tooth_mass = prm.get_bool("Tooth mass");
+    c.tooth_mass_energy_weighting = prm.get("Tooth mass weighting") == "quadratic";
+    prm.leave_subsection();
+
+    prm.enter_subsection("Kahraman-Singh");
+    c.ks_zeta = prm.get_double("Damping ratio");
+    c.ks_force = prm.get_double("Mean force");
+    c.ks_cos = doubles(prm.get("Cosine coefficients"));
+    c.ks_frequency = prm.get_double("Frequency");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Integrator");
+    c.integrator.method = method_from_string(prm.get("Method"));
+    c.integrator.adaptive = true;
+    c.response.steps_per_period = prm.get_integer("Steps per period");
+    c.integrator.rtol = prm.get_double("Relative tolerance");
+    c.integrator.atol = prm.get_double("Absolute tolerance");
+    c.integrator.locate_events = prm.get_bool("Event location");
+    c.integrator.event_tolerance = prm.get_double("Event tolerance");
+    if (c.integrator.method != Method::dopri5)
+      require_greater("Dynamics/Integrator/Steps per period", c.response.steps_per_period, 0.0);
+    c.integrator.step = c.model == ModelKind::kahraman_singh ? 1e-2 : 1e-6; // first trial step
+    prm.leave_subsection();
+
+    prm.enter_subsection("Analysis");
+    c.response.max_periods = prm.get_integer("Periods per speed");
+    c.response.record_periods = prm.get_integer("Recorded periods");
+    c.response.samples_per_period = prm.get_integer("Samples per period");
+    c.response.steady_tolerance = prm.get_double("Steady-state tolerance");
+    const double f = c.model == ModelKind::kahraman_singh ? 1.0 : rpm;
+    c.sweep_min = prm.get_double("Sweep minimum speed") * f;
+    c.sweep_max = prm.get_double("Sweep maximum speed") * f;
+    c.sweep_points = prm.get_integer("Number of speeds");
+    c.threads = prm.get_integer("Threads");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    c.check();
+    return c;
+  }
+} // namespace gearfem::dynamics
