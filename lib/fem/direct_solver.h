@@ -1,0 +1,43 @@
+#pragma once
+// A sparse direct solver that factorises once and solves for many right-hand sides:
+// MUMPS through PETSc (KSPPREONLY + PCLU, MatSolverType mumps) by default, UMFPACK for
+// small problems.
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+
+namespace gearfem::fem
+{
+  enum class SolverKind
+  {
+    automatic, ///< UMFPACK below `umfpack_max_dofs`, MUMPS above
+    mumps,
+    umfpack
+  };
+  /// "automatic", "mumps", "umfpack" -> SolverKind; throws InputError otherwise.
+  SolverKind solver_kind_from_string(const std::string &s);
+  const char *to_string(SolverKind k);
+
+  class DirectSolver
+  {
+  public:
+    DirectSolver();
+    ~DirectSolver();
+    /// Factorise A (square). For `automatic`, picks UMFPACK when A.m() <= umfpack_max_dofs.
+    /// Throws SolverError if the factorisation fails (singular matrix).
+    void factorize(const dealii::SparseMatrix<double> &A, SolverKind kind,
+                   unsigned int umfpack_max_dofs = 20000);
+    /// x = A^{-1} b with the stored factors.
+    void solve(const dealii::Vector<double> &b, dealii::Vector<double> &x) const;
+    /// The solver actually used (mumps or umfpack).
+    SolverKind kind() const { return kind_; }
+    bool factorized() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    SolverKind kind_ = SolverKind::automatic;
+  };
+} // namespace gearfem::fem

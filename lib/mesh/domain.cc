@@ -1,0 +1,533 @@
+// gmsh model construction for a Domain, all-quad meshing, and extraction of MeshData.
+#include "mesh/domain.h"
+
+#include "base/errors.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <set>
+#include <unistd.h>
+
+namespace gearfem::mesh
+{
+  namespace boundary
+  {
+    std::string name(unsigned int id)
+    {
+      switch (id)
+        {
+          case bore:
+            return "bore";
+          case cut_cw:
+            return "cut_cw";
+          case cut_ccw:
+            return "cut_ccw";
+          case outer:
+            return "outer";
+        }
+      if (id < 1000)
+        return "boundary_" + std::to_string(id);
+      static const char *codes[] = {"?",           "flank_drive",     "flank_coast",
+                                    "fillet_drive", "fillet_coast",   "tip",
+                                    "tip_round_drive", "tip_round_coast", "root_drive",
+                                    "root_coast"};
+      const unsigned int c = code_of(id);
+      return "tooth" + std::to_string(tooth_of(id)) + "_" + (c <= 9 ? codes[c] : "?");
+    }
+  } // namespace boundary
+
+  double ParametricCurve::closest_parameter(const Vec2 &q, double lo, double hi) const
+  {
+    if (lo > hi)
+      std::swap(lo, hi);
+    const int n  = 32;
+    double best  = lo, best_d = 1e300;
+    for (int i = 0; i <= n; ++i)
+      {
+        const double t = lo + (hi - lo) * i / n;
+        const double d = (point(t) - q).squaredNorm();
+        if (d < best_d)
+          best_d = d, best = t;
+      }
+    double t        = best;
+    const double dt = (hi - lo) / n;
+    double a = std::max(lo, best - dt), b = std::min(hi, best + dt);
+    for (int it = 0; it < 50; ++it)
+      {
+        const Vec2 r = point(t) - q, p1 = d1(t), p2 = d2(t);
+        const double f = r.dot(p1), df = p1.squaredNorm() + r.dot(p2);
+        // Keep a bracket [a, b] for safeguarding (f is increasing through the minimum).
+        if (f > 0)
+          b = t;
+        else
+          a = t;
+        double tn = (df > 0) ? t - f / df : 0.5 * (a + b);
+        if (!(tn > a && tn < b))
+          tn = 0.5 * (a + b);
+        if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t)) + 1e-16 * (hi - lo))
+          {
+            t = tn;
+            break;
+          }
+        t = tn;
+      }
+    return std::clamp(t, lo, hi);
+  }
+
+  ParametricCurve ParametricCurve::from(const geometry::CurvePtr &curve, double angle)
+  {
+    const double c = std::cos(angle), s = std::sin(angle);
+    auto rot       = [c, s](const Vec2 &v) { return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()); };
+    ParametricCurve pc;
+    pc.point = [curve, rot](double t) { return rot(curve->point(t)); };
+    pc.d1    = [curve, rot](double t) { return rot(curve->d1(t)); };
+    pc.d2    = [curve, rot](double t) { return rot(curve->d2(t)); };
+    return pc;
+  }
+
+  ParametricCurve ParametricCurve::circle(const Vec2 &c, double r)
+  {
+    ParametricCurve pc;
+    pc.point = [c, r](double t) { return Vec2(c + r * Vec2(std::cos(t), std::sin(t))); };
+    pc.d1    = [r](double t) { return Vec2(r * Vec2(-std::sin(t), std::cos(t))); };
+    pc.d2    = [r](double t) { return Vec2(-r * Vec2(std::cos(t), std::sin(t))); };
+    return pc;
+  }
+
+  ParametricCurve ParametricCurve::line(const Vec2 &a, const Vec2 &b)
+  {
+    ParametricCurve pc;
+    pc.point = [a, b](double t) { return Vec2(a + t * (b - a)); };
+    pc.d1    = [a, b](double) { return Vec2(b - a); };
+    pc.d2    = [](double) { return Vec2(0.0, 0.0); };
+    return pc;
+  }
+
+  namespace
+  {
+    /// gmsh is a global singleton: serialise its use within the process.
+    std::mutex gmsh_mutex;
+
+    struct GmshSession
+    {
+      GmshSession()
+      {
+        gmsh::initialize();
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::logger::start();
+      }
+      ~GmshSession()
+      {
+        try
+          {
+            gmsh::logger::stop();
+            gmsh::finalize();
+          }
+        catch (...)
+          {}
+      }
+      std::string last_errors() const
+      {
+        std::string e;
+        try
+          {
+            gmsh::logger::getLastError(e);
+          }
+        catch (...)
+          {}
+        return e;
+      }
+    };
+
+    [[noreturn]] void gmsh_failure(const std::string &what, const std::string &detail)
+    {
+      throw InputError("Mesh", "gmsh " + what, "a valid all-quad mesh",
+                       detail.empty() ? "gmsh failed; try other mesh sizes" : detail);
+    }
+
+    void validate_domain(const Domain &d)
+    {
+      require_greater("Mesh/h_body", d.h_body, 0.0, "m");
+      require_greater("Mesh/Growth ratio", d.growth, 1.0);
+      if (d.loops.empty() || d.loops[0].pieces.empty())
+        throw InputError("Mesh", "empty domain", "at least one closed loop");
+      for (const auto &loop : d.loops)
+        for (std::size_t i = 0; i < loop.pieces.size(); ++i)
+          {
+            const auto &a = loop.pieces[i], &b = loop.pieces[(i + 1) % loop.pieces.size()];
+            const double gap = (a.end() - b.start()).norm();
+            if (!(gap <= 1e-9 * (1.0 + a.end().norm())))
+              throw InputError("Mesh", "loop gap " + to_string_g(gap) + " m",
+                               "closed loops (consecutive pieces share end points)");
+          }
+    }
+  } // namespace
+
+  MeshData mesh_domain(const Domain &domain, const MeshingOptions &options)
+  {
+    validate_domain(domain);
+    std::lock_guard<std::mutex> lock(gmsh_mutex);
+    const auto t_start = std::chrono::steady_clock::now();
+    MeshData out;
+    GmshSession session;
+    try
+      {
+        gmsh::model::add(options.model_name);
+        namespace geo = gmsh::model::geo;
+        std::vector<int> loop_tags;
+        std::map<int, int> curve_to_piece;
+        std::vector<int> piece_to_curve;
+        for (const auto &loop : domain.loops)
+          {
+            std::vector<int> curves;
+            const int first_point = -1;
+            int prev_end          = first_point, loop_start = -1;
+            for (std::size_t i = 0; i < loop.pieces.size(); ++i)
+              {
+                const auto &piece = loop.pieces[i];
+                const int n       = piece.straight ? 1 : std::max(2, options.samples_per_piece);
+                std::vector<int> pts;
+                for (int j = 0; j <= n; ++j)
+                  {
+                    if (j == 0 && prev_end >= 0)
+                      {
+                        pts.push_back(prev_end);
+                        continue;
+                      }
+                    if (j == n && i + 1 == loop.pieces.size())
+                      {
+                        pts.push_back(loop_start);
+                        continue;
+                      }
+                    const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / n);
+                    pts.push_back(geo::addPoint(p.x(), p.y(), 0.0));
+                    if (i == 0 && j == 0)
+                      loop_start = pts.back();
+                  }
+                prev_end      = pts.back();
+                const int tag = piece.straight ? geo::addLine(pts[0], pts[1]) : geo::addSpline(pts);
+                curves.push_back(tag);
+                curve_to_piece[tag] = int(out.pieces.size());
+                piece_to_curve.push_back(tag);
+                out.pieces.push_back(piece);
+              }
+            loop_tags.push_back(geo::addCurveLoop(curves));
+          }
+        const int surface = geo::addPlaneSurface(loop_tags);
+        geo::synchronize();
+
+        // Physical groups: one per boundary id, plus the body.
+        std::map<unsigned int, std::vector<int>> groups;
+        for (const auto &[tag, piece] : curve_to_piece)
+          groups[out.pieces[piece].boundary_id].push_back(tag);
+        for (const auto &[id, tags] : groups)
+          {
+            gmsh::model::addPhysicalGroup(1, tags, int(id));
+            gmsh::model::setPhysicalName(1, int(id), boundary::name(id));
+          }
+        gmsh::model::addPhysicalGroup(2, {surface}, 1);
+        gmsh::model::setPhysicalName(2, 1, "body");
+
+        // Size field: for each distinct fine size, distance to its pieces and a threshold
+        // growing linearly (h + (g - 1) d, the continuous form of a geometric progression).
+        std::map<double, std::vector<double>> by_size;
+        for (const auto &[tag, piece] : curve_to_piece)
+          {
+            const double h = out.pieces[piece].size;
+            if (h > 0 && h < domain.h_body)
+              by_size[h].push_back(tag);
+          }
+        namespace field = gmsh::model::mesh::field;
+        std::vector<double> thresholds;
+        for (const auto &[h, tags] : by_size)
+          {
+            const int dist = field::add("Distance");
+            field::setNumbers(dist, "CurvesList", tags);
+            field::setNumber(dist, "NumPointsPerCurve", 400);
+            const int thr = field::add("Threshold");
+            field::setNumber(thr, "InField", dist);
+            field::setNumber(thr, "SizeMin", h);
+            field::setNumber(thr, "SizeMax", domain.h_body);
+            field::setNumber(thr, "DistMin", 0.5 * h);
+            field::setNumber(thr, "DistMax", 0.5 * h + (domain.h_body - h) / (domain.growth - 1.0));
+            thresholds.push_back(thr);
+          }
+        const int constant = field::add("MathEval");
+        field::setString(constant, "F", to_string_g(domain.h_body));
+        thresholds.push_back(constant);
+        const int fmin = field::add("Min");
+        field::setNumbers(fmin, "FieldsList", thresholds);
+        field::setAsBackgroundMesh(fmin);
+
+        // Node counts per curve from the arc length and the piece size, with an even
+        // number of edges per loop (added to the loop's longest curve): an odd boundary
+        // cannot be closed by quads only, and Blossom full-quad then leaves triangles.
+        {
+          std::size_t first = 0;
+          for (std::size_t l = 0; l < domain.loops.size(); ++l)
+            {
+              const std::size_t n_pieces = domain.loops[l].pieces.size();
+              std::vector<int> n_edges(n_pieces);
+              std::vector<double> lengths(n_pieces);
+              int total = 0;
+              for (std::size_t i = 0; i < n_pieces; ++i)
+                {
+                  const auto &piece = out.pieces[first + i];
+                  const double h = piece.size > 0 ? std::min(piece.size, domain.h_body) : domain.h_body;
+                  double length  = 0;
+                  const int ns   = 256;
+                  Vec2 prev      = piece.start();
+                  for (int j = 1; j <= ns; ++j)
+                    {
+                      const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / ns);
+                      length += (p - prev).norm();
+                      prev = p;
+                    }
+                  lengths[i] = length / h;
+                  n_edges[i] = std::max(1, int(std::lround(length / h)));
+                  total += n_edges[i];
+                }
+              if (total % 2 == 1)
+                ++n_edges[std::max_element(lengths.begin(), lengths.end()) - lengths.begin()];
+              for (std::size_t i = 0; i < n_pieces; ++i)
+                gmsh::model::mesh::setTransfiniteCurve(piece_to_curve[first + i], n_edges[i] + 1);
+              first += n_pieces;
+            }
+        }
+        gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps);
+        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+        gmsh::option::setNumber("Mesh.Algorithm", options.algorithm);
+        gmsh::option::setNumber("Mesh.RecombineAll", 1);
+        gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
+
+        gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+        gmsh::model::mesh::generate(2);
+        // Blossom recombination of a mesh with even boundary loops gives quads only; should
+        // a triangle remain, remesh at twice the size and split every element into quads
+        // (Mesh.SubdivisionAlgorithm = 1), which guarantees an all-quad mesh (lower quality).
+        auto n_non_quads = [&]() {
+          std::vector<int> t;
+          std::vector<std::vector<std::size_t>> et, en;
+          gmsh::model::mesh::getElements(t, et, en, 2, surface);
+          std::size_t n = 0;
+          for (std::size_t k = 0; k < t.size(); ++k)
+            if (t[k] != 3)
+              n += et[k].size();
+          return n;
+        };
+        // Blossom occasionally fails on a valid triangulation: retry Frontal-Delaunay with a
+        // perturbed triangulation (random factor), then MeshAdapt, before subdividing.
+        for (int attempt = 1; attempt <= 3 && n_non_quads() > 0; ++attempt)
+          {
+            gmsh::model::mesh::clear();
+            gmsh::option::setNumber("Mesh.RandomFactor", 1e-9 * (1 + 10 * attempt));
+            gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps + attempt);
+            gmsh::model::mesh::generate(2);
+          }
+        if (n_non_quads() > 0 && options.algorithm != 1)
+          {
+            gmsh::model::mesh::clear();
+            gmsh::option::setNumber("Mesh.Algorithm", 1);
+            gmsh::model::mesh::generate(2);
+          }
+        if (n_non_quads() > 0)
+          {
+            gmsh::model::mesh::clear();
+            gmsh::option::setNumber("Mesh.MeshSizeFactor", 2.0);
+            gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
+            gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+            gmsh::model::mesh::generate(2);
+            out.subdivided = true;
+          }
+
+        // Nodes.
+        std::vector<std::size_t> node_tags;
+        std::vector<double> coords, param;
+        gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, true, false);
+        std::map<std::size_t, unsigned int> index;
+        for (std::size_t i = 0; i < node_tags.size(); ++i)
+          if (index.emplace(node_tags[i], unsigned(out.vertices.size())).second)
+            out.vertices.emplace_back(coords[3 * i], coords[3 * i + 1]);
+
+        // Quads.
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elem_tags, elem_nodes;
+        gmsh::model::mesh::getElements(types, elem_tags, elem_nodes, 2, surface);
+        for (std::size_t k = 0; k < types.size(); ++k)
+          {
+            if (types[k] != 3)
+              gmsh_failure("left " + std::to_string(elem_tags[k].size()) +
+                             " non-quadrilateral elements (type " + std::to_string(types[k]) + ")",
+                           "recombination failed; change the mesh sizes");
+            for (std::size_t e = 0; e < elem_tags[k].size(); ++e)
+              {
+                std::array<unsigned int, 4> q;
+                for (int j = 0; j < 4; ++j)
+                  q[j] = index.at(elem_nodes[k][4 * e + j]);
+                // gmsh order is cyclic; make it counter-clockwise, then lexicographic.
+                const Vec2 &a = out.vertices[q[0]], &b = out.vertices[q[1]], &c = out.vertices[q[2]],
+                           &d  = out.vertices[q[3]];
+                const double area2 = (c - a).x() * (d - b).y() - (c - a).y() * (d - b).x();
+                if (area2 < 0)
+                  std::swap(q[1], q[3]);
+                out.cells.push_back({q[0], q[1], q[3], q[2]});
+              }
+          }
+        if (out.cells.empty())
+          gmsh_failure("produced no elements", "");
+
+        // Boundary edges per curve.
+        for (const auto &[tag, piece] : curve_to_piece)
+          {
+            gmsh::model::mesh::getElements(types, elem_tags, elem_nodes, 1, tag);
+            for (std::size_t k = 0; k < types.size(); ++k)
+              for (std::size_t e = 0; e < elem_tags[k].size(); ++e)
+                out.boundary_edges.push_back({index.at(elem_nodes[k][2 * e]),
+                                              index.at(elem_nodes[k][2 * e + 1]),
+                                              out.pieces[piece].boundary_id, piece});
+          }
+
+        if (!options.msh_file.empty())
+          {
+            const auto &target = options.msh_file;
+            auto tmp           = target.parent_path() /
+                       ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + ".msh");
+            gmsh::write(tmp.string());
+            std::filesystem::rename(tmp, target);
+          }
+      }
+    catch (const std::string &e)
+      {
+        gmsh_failure("error: " + e, session.last_errors());
+      }
+    catch (const std::out_of_range &)
+      {
+        gmsh_failure("returned inconsistent node tags", "");
+      }
+
+    // Snap boundary vertices onto the exact curves (gmsh meshed a spline through samples).
+    std::vector<int> on_piece(out.vertices.size(), -1);
+    std::vector<char> corner(out.vertices.size(), 0);
+    for (const auto &e : out.boundary_edges)
+      for (unsigned v : {e.v0, e.v1})
+        {
+          if (on_piece[v] >= 0 && on_piece[v] != e.piece)
+            corner[v] = 1;
+          on_piece[v] = e.piece;
+        }
+    for (std::size_t v = 0; v < out.vertices.size(); ++v)
+      {
+        if (on_piece[v] < 0)
+          continue;
+        const auto &piece = out.pieces[on_piece[v]];
+        Vec2 &x           = out.vertices[v];
+        if (corner[v])
+          x = (x - piece.start()).norm() < (x - piece.end()).norm() ? piece.start() : piece.end();
+        else if (!piece.straight)
+          x = piece.curve.point(piece.curve.closest_parameter(x, piece.t0, piece.t1));
+      }
+    out.mesh_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+
+    const QualityReport q = quality(out);
+    if (q.n_inverted > 0)
+      gmsh_failure("produced " + std::to_string(q.n_inverted) + " inverted cells",
+                   "refine the mesh near strongly curved boundaries");
+    return out;
+  }
+
+  QualityReport quality(const MeshData &mesh)
+  {
+    QualityReport r;
+    r.n_cells    = mesh.cells.size();
+    std::vector<char> used(mesh.vertices.size(), 0);
+    for (const auto &c : mesh.cells)
+      for (unsigned v : c)
+        used[v] = 1;
+    r.n_vertices = std::count(used.begin(), used.end(), 1);
+    r.min_angle = 360, r.max_angle = 0, r.min_edge = 1e300, r.max_edge = 0;
+    const double rad2deg = 180.0 / 3.14159265358979323846;
+    for (const auto &c : mesh.cells)
+      {
+        const Vec2 p[4] = {mesh.vertices[c[0]], mesh.vertices[c[1]], mesh.vertices[c[3]],
+                           mesh.vertices[c[2]]}; // counter-clockwise
+        double lmin = 1e300, lmax = 0;
+        bool inverted = false;
+        for (int i = 0; i < 4; ++i)
+          {
+            const Vec2 a = p[(i + 1) % 4] - p[i], b = p[(i + 3) % 4] - p[i];
+            const double cross = a.x() * b.y() - a.y() * b.x();
+            if (cross <= 0)
+              inverted = true;
+            const double ang = std::atan2(std::abs(cross), a.dot(b)) * rad2deg;
+            r.min_angle      = std::min(r.min_angle, inverted ? 0.0 : ang);
+            r.max_angle      = std::max(r.max_angle, inverted ? 180.0 : ang);
+            lmin             = std::min(lmin, a.norm());
+            lmax             = std::max(lmax, a.norm());
+          }
+        r.n_inverted += inverted;
+        r.max_aspect_ratio = std::max(r.max_aspect_ratio, lmax / lmin);
+        r.min_edge         = std::min(r.min_edge, lmin);
+        r.max_edge         = std::max(r.max_edge, lmax);
+      }
+    return r;
+  }
+
+  Domain annulus_domain(double r_inner, double r_outer, double h)
+  {
+    require_greater("Mesh/Bore radius", r_inner, 0.0, "m");
+    if (!(r_outer > r_inner))
+      throw InputError("Mesh/Outer radius", to_string_g(r_outer) + " m",
+                       "> bore radius " + to_string_g(r_inner) + " m");
+    const double pi = 3.14159265358979323846;
+    Domain d;
+    d.h_body = h;
+    d.growth = 1.3;
+    Loop outer, inner;
+    for (int k = 0; k < 4; ++k)
+      {
+        BoundaryPiece o;
+        o.curve       = ParametricCurve::circle(Vec2(0, 0), r_outer);
+        o.t0          = k * pi / 2;
+        o.t1          = (k + 1) * pi / 2;
+        o.boundary_id = boundary::outer;
+        outer.pieces.push_back(o);
+        BoundaryPiece i = o;
+        i.curve         = ParametricCurve::circle(Vec2(0, 0), r_inner);
+        i.t0            = -k * pi / 2;
+        i.t1            = -(k + 1) * pi / 2; // holes run clockwise
+        i.boundary_id   = boundary::bore;
+        inner.pieces.push_back(i);
+      }
+    d.loops = {outer, inner};
+    return d;
+  }
+
+  Domain rectangle_domain(double length, double height, double h)
+  {
+    require_greater("length", length, 0.0, "m");
+    require_greater("height", height, 0.0, "m");
+    const Vec2 c[4] = {{0, -height / 2}, {length, -height / 2}, {length, height / 2}, {0, height / 2}};
+    const unsigned ids[4] = {12, 13, 14, 11};
+    Domain d;
+    d.h_body = h;
+    Loop l;
+    for (int k = 0; k < 4; ++k)
+      {
+        BoundaryPiece p;
+        p.curve       = ParametricCurve::line(c[k], c[(k + 1) % 4]);
+        p.boundary_id = ids[k];
+        p.straight    = true;
+        l.pieces.push_back(p);
+      }
+    d.loops = {l};
+    return d;
+  }
+} // namespace gearfem::mesh

@@ -1,0 +1,277 @@
+// Gear body domains (full gear or sector) from a ToothProfile.
+#include "base/errors.h"
+#include "mesh/gear_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace gearfem::mesh
+{
+  namespace
+  {
+    int mod(int k, int z) { return ((k % z) + z) % z; }
+    constexpr double pi = 3.14159265358979323846;
+  } // namespace
+
+  void GearMeshParameters::validate() const
+  {
+    if (model == Model::sector && sector_teeth < 1)
+      throw InputError("Mesh/Sector teeth", std::to_string(sector_teeth), ">= 1");
+    require_greater("Mesh/h_contact", h_contact * 1e3, 0.0, "mm");
+    require_greater("Mesh/h_fillet", h_fillet * 1e3, 0.0, "mm");
+    require_greater("Mesh/h_body", h_body * 1e3, 0.0, "mm");
+    if (h_contact > h_body)
+      throw InputError("Mesh/h_contact", to_string_g(h_contact * 1e3) + " mm",
+                       "<= h_body = " + to_string_g(h_body * 1e3) + " mm");
+    if (h_fillet > h_body)
+      throw InputError("Mesh/h_fillet", to_string_g(h_fillet * 1e3) + " mm",
+                       "<= h_body = " + to_string_g(h_body * 1e3) + " mm");
+    if (h_tooth < 0)
+      throw InputError("Mesh/h_tooth", to_string_g(h_tooth * 1e3) + " mm", ">= 0 (0: automatic)");
+    require_greater("Mesh/Growth ratio", growth, 1.0);
+    if (bore_radius < 0)
+      throw InputError("Mesh/Bore radius", to_string_g(bore_radius * 1e3) + " mm", ">= 0 (0: automatic)");
+    if (rim_thickness < 0)
+      throw InputError("Mesh/Rim thickness", to_string_g(rim_thickness * 1e3) + " mm",
+                       ">= 0 (0: automatic)");
+    if (fine_teeth != "auto")
+      {
+        std::stringstream s(fine_teeth);
+        std::string item;
+        while (std::getline(s, item, ','))
+          {
+            std::size_t pos = 0;
+            try
+              {
+                (void)std::stoi(item, &pos);
+              }
+            catch (...)
+              {
+                pos = 0;
+              }
+            if (pos == 0)
+              throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
+          }
+      }
+  }
+
+  std::vector<int> model_teeth(const GearMeshParameters &p, int z)
+  {
+    std::vector<int> t;
+    if (p.model == GearMeshParameters::Model::full_gear)
+      for (int k = 0; k < z; ++k)
+        t.push_back(k);
+    else
+      {
+        if (p.sector_teeth > z)
+          throw InputError("Mesh/Sector teeth", std::to_string(p.sector_teeth),
+                           "<= number of teeth " + std::to_string(z));
+        const int first = -(p.sector_teeth - 1) / 2;
+        for (int k = first; k < first + p.sector_teeth; ++k)
+          t.push_back(k);
+      }
+    return t;
+  }
+
+  std::vector<int> fine_teeth(const GearMeshParameters &p, int z)
+  {
+    std::set<int> s;
+    if (p.fine_teeth == "auto")
+      {
+        if (p.model == GearMeshParameters::Model::sector)
+          for (int k : model_teeth(p, z))
+            s.insert(mod(k, z));
+        else
+          for (int k = -2; k <= 2; ++k)
+            s.insert(mod(k, z));
+      }
+    else
+      {
+        std::stringstream in(p.fine_teeth);
+        std::string item;
+        while (std::getline(in, item, ','))
+          s.insert(mod(std::stoi(item), z));
+      }
+    return {s.begin(), s.end()};
+  }
+
+  double inner_radius(const GearMeshParameters &p, const geometry::ToothProfile &tooth)
+  {
+    const double rf = tooth.radii().root;
+    double ri;
+    if (p.rim_thickness > 0)
+      {
+        ri = rf - p.rim_thickness;
+        if (!(ri > 0.05 * rf))
+          throw InputError("Mesh/Rim thickness", to_string_g(p.rim_thickness * 1e3) + " mm",
+                           "< 0.95 root radius = " + to_string_g(0.95 * rf * 1e3) + " mm",
+                           "the rim leaves no material");
+      }
+    else if (p.model == GearMeshParameters::Model::sector && p.bore_radius == 0)
+      ri = rf - 2.75 * tooth.parameters().rack.module;
+    else
+      ri = p.bore_radius > 0 ? p.bore_radius : 0.5 * rf;
+    if (!(ri > 0 && ri < rf - std::min(p.h_fillet, 0.1 * rf)))
+      throw InputError(p.rim_thickness > 0 ? "Mesh/Rim thickness" : "Mesh/Bore radius",
+                       to_string_g((p.rim_thickness > 0 ? p.rim_thickness : ri) * 1e3) + " mm",
+                       "bore radius in (0, root radius = " + to_string_g(rf * 1e3) + " mm)",
+                       "no material left between the bore and the root circle");
+    return ri;
+  }
+
+  boundary::Code segment_code(geometry::SegmentType type, geometry::Side side)
+  {
+    using geometry::SegmentType;
+    const bool drive = side == geometry::Side::drive;
+    switch (type)
+      {
+        case SegmentType::flank:
+          return drive ? boundary::flank_drive : boundary::flank_coast;
+        case SegmentType::fillet:
+          return drive ? boundary::fillet_drive : boundary::fillet_coast;
+        case SegmentType::root:
+          return drive ? boundary::root_drive : boundary::root_coast;
+        case SegmentType::tip_rounding:
+          return drive ? boundary::tip_round_drive : boundary::tip_round_coast;
+        case SegmentType::tip:
+          break;
+      }
+    return boundary::tip;
+  }
+
+  Domain gear_domain(const geometry::ToothProfile &tooth, const GearMeshParameters &p)
+  {
+    p.validate();
+    const int z                 = tooth.teeth();
+    const double m              = tooth.parameters().rack.module;
+    const double ri             = inner_radius(p, tooth);
+    const std::vector<int> fine = fine_teeth(p, z);
+    const std::set<int> fine_set(fine.begin(), fine.end());
+    const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
+
+    Domain d;
+    d.h_body = p.h_body;
+    d.growth = p.growth;
+    Loop outer;
+    const auto &segs = tooth.segments();
+    for (const int k : model_teeth(p, z))
+      {
+        const double angle = 2.0 * pi * k / z;
+        const bool is_fine = fine_set.count(mod(k, z)) > 0;
+        for (std::size_t s = 0; s < segs.size(); ++s)
+          {
+            const auto &sg = segs[s];
+            BoundaryPiece piece;
+            piece.curve       = ParametricCurve::from(sg.curve, angle);
+            piece.t0          = sg.t0;
+            piece.t1          = sg.t1;
+            const auto code   = segment_code(sg.type, sg.side);
+            piece.boundary_id = boundary::tooth_id(mod(k, z), code);
+            piece.tooth       = mod(k, z);
+            piece.segment     = int(s);
+            const bool flank_like = sg.type == geometry::SegmentType::flank ||
+                                    sg.type == geometry::SegmentType::tip ||
+                                    sg.type == geometry::SegmentType::tip_rounding;
+            piece.size = !is_fine ? h_coarse : (flank_like ? p.h_contact : p.h_fillet);
+            // Split fine flanks at the requested radii (bisection on the radius).
+            std::vector<double> cuts;
+            if (is_fine && sg.type == geometry::SegmentType::flank)
+              for (const double r : p.flank_split_radii)
+                {
+                  double a = sg.t0, b = sg.t1;
+                  const double ra = sg.curve->point(a).norm(), rb = sg.curve->point(b).norm();
+                  if (!(r > std::min(ra, rb) + 1e-3 * p.h_contact && r < std::max(ra, rb) - 1e-3 * p.h_contact))
+                    continue;
+                  for (int it = 0; it < 200; ++it)
+                    {
+                      const double mid = 0.5 * (a + b);
+                      if ((sg.curve->point(mid).norm() < r) == (ra < r))
+                        a = mid;
+                      else
+                        b = mid;
+                    }
+                  cuts.push_back(0.5 * (a + b));
+                }
+            std::sort(cuts.begin(), cuts.end(), [&](double x, double y) {
+              return (sg.t1 >= sg.t0) ? x < y : x > y;
+            });
+            double t_prev = sg.t0;
+            for (const double c : cuts)
+              {
+                BoundaryPiece first = piece;
+                first.t0            = t_prev;
+                first.t1            = c;
+                outer.pieces.push_back(first);
+                t_prev = c;
+              }
+            piece.t0 = t_prev;
+            outer.pieces.push_back(piece);
+          }
+      }
+    const Vec2 start = outer.pieces.front().start(), end = outer.pieces.back().end();
+    if (p.model == GearMeshParameters::Model::full_gear)
+      {
+        // Close the outline exactly (tooth z-1 ends where tooth 0 starts).
+        if ((start - end).norm() > 1e-9 * start.norm())
+          throw InputError("Gear outline", "not closed (gap " + to_string_g((start - end).norm()) + " m)",
+                           "a closed outline");
+        d.loops.push_back(outer);
+        Loop hole;
+        for (int q = 0; q < 4; ++q)
+          {
+            BoundaryPiece b;
+            b.curve       = ParametricCurve::circle(Vec2(0, 0), ri);
+            b.t0          = -q * pi / 2;
+            b.t1          = -(q + 1) * pi / 2;
+            b.boundary_id = boundary::bore;
+            b.size        = p.h_body;
+            hole.pieces.push_back(b);
+          }
+        d.loops.push_back(hole);
+      }
+    else
+      {
+        const Vec2 end_in = ri * end.normalized(), start_in = ri * start.normalized();
+        BoundaryPiece cut_ccw;
+        cut_ccw.curve       = ParametricCurve::line(end, end_in);
+        cut_ccw.straight    = true;
+        cut_ccw.boundary_id = boundary::cut_ccw;
+        outer.pieces.push_back(cut_ccw);
+        const double a_end = std::atan2(end_in.y(), end_in.x());
+        double a_start     = std::atan2(start_in.y(), start_in.x());
+        while (a_start > a_end)
+          a_start -= 2 * pi;
+        // Inner arc from the ccw end back to the cw start (clockwise), in pieces <= 90 deg.
+        const int n_arc = std::max(1, int(std::ceil((a_end - a_start) / (pi / 2))));
+        for (int q = 0; q < n_arc; ++q)
+          {
+            BoundaryPiece b;
+            b.curve       = ParametricCurve::circle(Vec2(0, 0), ri);
+            b.t0          = a_end - (a_end - a_start) * q / n_arc;
+            b.t1          = a_end - (a_end - a_start) * (q + 1) / n_arc;
+            b.boundary_id = boundary::bore;
+            b.size        = p.h_body;
+            outer.pieces.push_back(b);
+          }
+        BoundaryPiece cut_cw;
+        cut_cw.curve       = ParametricCurve::line(start_in, start);
+        cut_cw.straight    = true;
+        cut_cw.boundary_id = boundary::cut_cw;
+        outer.pieces.push_back(cut_cw);
+        d.loops.push_back(outer);
+      }
+    return d;
+  }
+
+  MeshData mesh_gear(const geometry::ToothProfile &tooth, const GearMeshParameters &p,
+                     const std::filesystem::path &msh_file)
+  {
+    MeshingOptions o;
+    o.msh_file          = msh_file;
+    o.samples_per_piece = p.spline_samples;
+    o.model_name        = "gear_z" + std::to_string(tooth.teeth());
+    return mesh_domain(gear_domain(tooth, p), o);
+  }
+} // namespace gearfem::mesh

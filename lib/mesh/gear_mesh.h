@@ -1,0 +1,63 @@
+#pragma once
+// The gear body to mesh, in its own body frame (centre at the origin, tooth 0 axis +y):
+// a full gear (all z teeth, bore) or a sector of N teeth (rim below the root circle,
+// straight radial cut edges; seed 001's 3-tooth model generalised). No deal.II, no gmsh.
+// SI units (m).
+#include "geometry/profile.h"
+#include "mesh/domain.h"
+
+#include <string>
+#include <vector>
+
+namespace gearfem::mesh
+{
+  /// The `Mesh` section, in SI units.
+  struct GearMeshParameters
+  {
+    enum class Model
+    {
+      full_gear, ///< all z teeth, bore circle inside
+      sector     ///< N teeth, rim of given thickness, radial cut edges
+    };
+    Model model             = Model::full_gear;
+    int sector_teeth        = 3;       ///< N (sector only), >= 1
+    double h_contact        = 0.25e-3; ///< element size on the flanks of the fine teeth [m]
+    double h_fillet         = 0.25e-3; ///< element size on the fillets and root of the fine teeth [m]
+    double h_body           = 3e-3;    ///< largest element size inside [m]
+    double h_tooth          = 0;       ///< size on the other teeth [m]; 0: min(h_body, 0.4 m)
+    double growth           = 1.2;     ///< size growth ratio away from fine boundaries (> 1)
+    double bore_radius      = 0;       ///< [m]; 0: half the root radius
+    double rim_thickness    = 0;       ///< below the root circle [m]; 0: bore (full gear) or 2.75 m (sector)
+    /// Teeth that get the fine sizes: "auto" (teeth -2..2 of a full gear: those in contact
+    /// over a mesh cycle around tooth 0 plus one on each side; all teeth of a sector) or a
+    /// comma-separated list of tooth indices (negative allowed, taken modulo z).
+    std::string fine_teeth = "auto";
+    /// Radii [m] at which the flanks of the fine teeth are split into separate gmsh curves
+    /// (same boundary id), so that mesh vertices sit at the edges of a load patch.
+    std::vector<double> flank_split_radii;
+    unsigned int refinements = 0; ///< global refinements after import
+    int spline_samples       = 24; ///< gmsh spline points per outline segment
+
+    /// Throws InputError naming the `Mesh` entry for N < 1, sizes <= 0, h_contact or
+    /// h_fillet > h_body, growth <= 1, bad fine-teeth lists.
+    void validate() const;
+  };
+
+  /// Tooth indices (0 <= k < z) that get fine sizes.
+  std::vector<int> fine_teeth(const GearMeshParameters &p, int z);
+  /// Tooth indices of the model in outline order (all z, or the N sector teeth around 0).
+  std::vector<int> model_teeth(const GearMeshParameters &p, int z);
+  /// Radius of the inner boundary (bore or fixed rim) [m]. Throws InputError when it
+  /// leaves no material (bore radius >= root radius, rim thickness >= root radius).
+  double inner_radius(const GearMeshParameters &p, const geometry::ToothProfile &tooth);
+  /// Boundary-id code of an outline segment (mesh::boundary::Code).
+  boundary::Code segment_code(geometry::SegmentType type, geometry::Side side);
+
+  /// The domain of the gear body: outline pieces with ids 1000 (tooth + 1) + code, the
+  /// bore (id 1) and, for sectors, the cut edges (ids 2, 3).
+  Domain gear_domain(const geometry::ToothProfile &tooth, const GearMeshParameters &p);
+
+  /// Mesh the gear body with gmsh (and write `msh_file` when not empty).
+  MeshData mesh_gear(const geometry::ToothProfile &tooth, const GearMeshParameters &p,
+                     const std::filesystem::path &msh_file = {});
+} // namespace gearfem::mesh

@@ -1,0 +1,83 @@
+// The `Mesh` section. Patterns are wide on purpose: GearMeshParameters::validate() gives
+// the named errors with the allowed ranges.
+#include "mesh/parameters.h"
+
+#include "base/units.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace gearfem::mesh
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::Selection;
+
+  void declare_mesh_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Model", "full gear", Selection("full gear|sector"),
+                      "Full gear (all z teeth, bore) or a sector of N teeth with a rim below the "
+                      "root circle and radial cut edges (seed 001's 3-tooth model).");
+    prm.declare_entry("Sector teeth", "3", Integer(), "N, teeth of a sector model. Units: none. Allowed: >= 1.");
+    prm.declare_entry("h_contact", "0.25", Double(),
+                      "Element size on the flanks (and tip) of the fine teeth. Units: mm. "
+                      "Allowed: > 0 and <= h_body.");
+    prm.declare_entry("h_fillet", "0.25", Double(),
+                      "Element size on the fillets and root of the fine teeth. Units: mm. "
+                      "Allowed: > 0 and <= h_body.");
+    prm.declare_entry("h_body", "3", Double(), "Largest element size inside the body. Units: mm. Allowed: > 0.");
+    prm.declare_entry("h_tooth", "0", Double(),
+                      "Element size on the outline of the other teeth; 0: min(h_body, 0.4 m). Units: mm.");
+    prm.declare_entry("Growth ratio", "1.2", Double(),
+                      "Bound on the size ratio of neighbouring elements away from the fine "
+                      "boundaries. Units: none. Allowed: > 1.");
+    prm.declare_entry("Global refinements", "0", Integer(0, 6),
+                      "Uniform refinements of the gmsh mesh after import (new boundary points on "
+                      "the exact curves). Units: none.");
+    prm.declare_entry("Spline samples", "24", Integer(4, 400),
+                      "Points per outline segment of the gmsh spline geometry (the mesh is snapped "
+                      "to the exact curves afterwards). Units: none.");
+    for (const char *g : {"Gear 1", "Gear 2"})
+      {
+        prm.enter_subsection(g);
+        prm.declare_entry("Bore radius", "0", Double(),
+                          "Radius of the clamped inner circle; 0: half the root radius. Units: mm. "
+                          "Allowed: 0 < r < root radius.");
+        prm.declare_entry("Rim thickness", "0", Double(),
+                          "If > 0, the inner circle is a fixed rim boundary this far below the root "
+                          "circle (replaces the bore); 0: bore for a full gear, 2.75 m for a sector. "
+                          "Units: mm.");
+        prm.declare_entry("Fine teeth", "auto", Anything(),
+                          "Teeth meshed with h_contact/h_fillet: auto (full gear: teeth -2..2, those "
+                          "in contact over a mesh cycle plus one on each side; sector: all) or a "
+                          "comma-separated list of tooth indices (negative allowed, modulo z).");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+  GearMeshParameters parse_mesh_parameters(dealii::ParameterHandler &prm, int gear)
+  {
+    GearMeshParameters p;
+    prm.enter_subsection("Mesh");
+    p.model = prm.get("Model") == "sector" ? GearMeshParameters::Model::sector :
+                                             GearMeshParameters::Model::full_gear;
+    p.sector_teeth   = prm.get_integer("Sector teeth");
+    p.h_contact      = prm.get_double("h_contact") * units::mm;
+    p.h_fillet       = prm.get_double("h_fillet") * units::mm;
+    p.h_body         = prm.get_double("h_body") * units::mm;
+    p.h_tooth        = prm.get_double("h_tooth") * units::mm;
+    p.growth         = prm.get_double("Growth ratio");
+    p.refinements    = prm.get_integer("Global refinements");
+    p.spline_samples = prm.get_integer("Spline samples");
+    prm.enter_subsection(gear == 2 ? "Gear 2" : "Gear 1");
+    p.bore_radius   = prm.get_double("Bore radius") * units::mm;
+    p.rim_thickness = prm.get_double("Rim thickness") * units::mm;
+    p.fine_teeth    = prm.get("Fine teeth");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    p.validate();
+    return p;
+  }
+} // namespace gearfem::mesh

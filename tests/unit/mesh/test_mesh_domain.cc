@@ -1,0 +1,128 @@
+// Mesh module on domains with known geometry (annulus, rectangle): all-quad gmsh meshes,
+// boundary ids through the import path and the .msh file, exact-curve manifolds.
+#include "base/errors.h"
+#include "mesh/domain.h"
+#include "mesh/triangulation.h"
+
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+using namespace gearfem;
+
+namespace
+{
+  std::map<unsigned, int> count_boundary_ids(const dealii::Triangulation<2> &tria)
+  {
+    std::map<unsigned, int> n;
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary())
+        ++n[face->boundary_id()];
+    return n;
+  }
+} // namespace
+
+// Reference: the annulus boundary is the pair of circles r = 10 mm and r = 20 mm exactly.
+TEST(MeshDomain, AnnulusIdsManifoldsAndRefinement)
+{
+  const double a = 0.010, b = 0.020;
+  const mesh::MeshData m = mesh::mesh_domain(mesh::annulus_domain(a, b, 0.002));
+  const auto q           = mesh::quality(m);
+  EXPECT_GT(q.n_cells, 50u);
+  EXPECT_EQ(q.n_inverted, 0u);
+  EXPECT_GT(q.min_angle, 20.0);
+  EXPECT_LT(q.max_angle, 160.0);
+  // gmsh vertices snapped onto the exact circles.
+  for (const auto &e : m.boundary_edges)
+    for (unsigned v : {e.v0, e.v1})
+      {
+        const double r = m.vertices[v].norm();
+        EXPECT_NEAR(r, e.boundary_id == mesh::boundary::bore ? a : b, 1e-12);
+      }
+
+  dealii::Triangulation<2> tria;
+  mesh::create_triangulation(m, tria);
+  auto ids = count_boundary_ids(tria);
+  ASSERT_EQ(ids.size(), 2u); // exactly bore (1) and outer (4) arrive
+  EXPECT_GT(ids[mesh::boundary::bore], 10);
+  EXPECT_GT(ids[mesh::boundary::outer], 10);
+
+  // Issue requirement: after 2 global refinements the boundary vertices lie on the exact
+  // curve to <= 1e-9 m (here: the circles, by their radius).
+  tria.refine_global(2);
+  double worst = 0;
+  for (const auto &face : tria.active_face_iterators())
+    if (face->at_boundary())
+      for (unsigned v = 0; v < 2; ++v)
+        worst = std::max(worst, std::abs(face->vertex(v).norm() -
+                                         (face->boundary_id() == mesh::boundary::bore ? a : b)));
+  EXPECT_LE(worst, 1e-9);
+  EXPECT_LE(mesh::max_boundary_vertex_distance(m, tria), 1e-9);
+  // Ids survive refinement (4x the faces).
+  auto ids2 = count_boundary_ids(tria);
+  EXPECT_EQ(ids2[mesh::boundary::bore], 4 * ids[mesh::boundary::bore]);
+}
+
+// Reference: the physical groups written to the .msh file (format 4.1) must come back
+// through deal.II's native stream reader with the same ids (PITFALLS.md: the file-name
+// overload lost them in 9.4.1).
+TEST(MeshDomain, MshFileKeepsPhysicalGroups)
+{
+  mesh::MeshingOptions opt;
+  opt.msh_file = std::filesystem::temp_directory_path() / "gearfem_test_annulus.msh";
+  const auto m = mesh::mesh_domain(mesh::annulus_domain(0.01, 0.02, 0.003), opt);
+  ASSERT_TRUE(std::filesystem::exists(opt.msh_file));
+  std::ifstream in(opt.msh_file);
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "$MeshFormat");
+  in.seekg(0);
+  dealii::Triangulation<2> tria;
+  dealii::GridIn<2> gi;
+  gi.attach_triangulation(tria);
+  gi.read_msh(in);
+  EXPECT_EQ(tria.n_active_cells(), m.cells.size());
+  auto ids = count_boundary_ids(tria);
+  EXPECT_GT(ids[1], 0);
+  EXPECT_GT(ids[4], 0);
+  std::filesystem::remove(opt.msh_file);
+}
+
+// Reference: a rectangle has four straight sides with the documented ids 11..14 and area L H.
+TEST(MeshDomain, RectangleAllQuadsAndArea)
+{
+  const double L = 0.1, H = 0.01;
+  const auto m = mesh::mesh_domain(mesh::rectangle_domain(L, H, 0.002));
+  double area  = 0;
+  for (const auto &c : m.cells)
+    {
+      const auto &p0 = m.vertices[c[0]], &p1 = m.vertices[c[1]], &p2 = m.vertices[c[3]],
+                 &p3 = m.vertices[c[2]];
+      area += 0.5 * ((p2 - p0).x() * (p3 - p1).y() - (p2 - p0).y() * (p3 - p1).x());
+    }
+  EXPECT_NEAR(area, L * H, 1e-12 * L * H * 100);
+  dealii::Triangulation<2> tria;
+  mesh::create_triangulation(m, tria);
+  auto ids = count_boundary_ids(tria);
+  for (unsigned id : {11u, 12u, 13u, 14u})
+    EXPECT_GT(ids[id], 0) << "id " << id;
+}
+
+// Bad input gets a named InputError.
+TEST(MeshDomain, BadInput)
+{
+  EXPECT_THROW(mesh::annulus_domain(0.02, 0.01, 0.001), InputError);
+  auto d   = mesh::annulus_domain(0.01, 0.02, 0.001);
+  d.h_body = 0;
+  EXPECT_THROW(mesh::mesh_domain(d), InputError);
+  d.h_body = 0.001;
+  d.growth = 1.0;
+  EXPECT_THROW(mesh::mesh_domain(d), InputError);
+}
