@@ -4,11 +4,19 @@
 namespace gearfem::commands
 {
   Command profile_command();
+  Command dynamics_command();
+  Command rate_command();
+  Command mesh_command();
+  Command bench_command();
 
   const std::vector<Command> &registry()
   {
     static const std::vector<Command> commands = {
       profile_command(),
+      dynamics_command(),
+      rate_command(),
+      mesh_command(),
+      bench_command(),
     };
     return commands;
   }
