@@ -104,7 +104,7 @@ def main(argv):
         draw(axes[row][0], nodes, quads, blines)
         axes[row][0].set_title(f"{name}: {len(quads)} quadrilaterals")
         draw(axes[row][1], nodes, quads, blines, box)
-        axes[row][1].set_title(f"{name}: tooth region (flank red/orange, fillet blue/cyan, tip green)")
+        axes[row][1].set_title(f"{name}: teeth (flank red/orange, fillet blue/cyan, tip green)", fontsize=9)
     fig.tight_layout()
     tmp = out + ".tmp.png"
     fig.savefig(tmp, dpi=130)

@@ -66,9 +66,11 @@ case $mode in
   validate)
     n=0
     for f in "$arg"/inputs/*.prm; do
-      cmd=$(sed -n 's/^#[[:space:]]*gearfem[[:space:]]\+\([a-z]\+\).*/\1/p' "$f" | head -n 1)
+      # The first line names the job: "# gearfem <command> [<sub-command>]".
+      cmd=$(sed -n '1s/^#[[:space:]]*gearfem[[:space:]]\+\([a-z]\+\([[:space:]]\+[a-z]\+\)\?\)[[:space:]]*$/\1/p' "$f")
       cmd=${cmd:-profile}
-      "$gearfem" "$cmd" --validate "$f" > "$work/log" 2>&1 || { cat "$work/log"; fail "$f does not validate"; }
+      # shellcheck disable=SC2086
+      "$gearfem" $cmd --validate "$f" > "$work/log" 2>&1 || { cat "$work/log"; fail "$f does not validate"; }
       n=$((n + 1))
     done
     echo "$n inputs validated"
