@@ -182,4 +182,36 @@ namespace gearfem::fem
     std::copy(q, q + rhs.size(), sol.begin());
     check(VecRestoreArrayRead(impl_->x, &q), "VecRestoreArrayRead");
   }
+
+  void DirectSolver::solve_block(std::vector<double> &X, unsigned int k) const
+  {
+    if (!impl_->ready)
+      throw SolverError("DirectSolver::solve_block called before factorize");
+    if (k == 0)
+      return;
+    const std::size_t n = X.size() / k;
+    if (n * k != X.size())
+      throw SolverError("DirectSolver::solve_block: block size is not a multiple of k");
+    if (kind_ == SolverKind::umfpack)
+      {
+        dealii::Vector<double> c(n);
+        for (unsigned int j = 0; j < k; ++j)
+          {
+            std::copy(X.begin() + j * n, X.begin() + (j + 1) * n, c.begin());
+            impl_->umfpack.solve(c);
+            std::copy(c.begin(), c.end(), X.begin() + j * n);
+          }
+        return;
+      }
+    Mat B = nullptr, Y = nullptr;
+    check(MatCreateSeqDense(PETSC_COMM_SELF, PetscInt(n), PetscInt(k), X.data(), &B), "MatCreateSeqDense");
+    check(MatCreateSeqDense(PETSC_COMM_SELF, PetscInt(n), PetscInt(k), nullptr, &Y), "MatCreateSeqDense");
+    check(KSPMatSolve(impl_->ksp, B, Y), "KSPMatSolve (MUMPS)");
+    const PetscScalar *y;
+    check(MatDenseGetArrayRead(Y, &y), "MatDenseGetArrayRead");
+    std::copy(y, y + n * k, X.begin());
+    check(MatDenseRestoreArrayRead(Y, &y), "MatDenseRestoreArrayRead");
+    MatDestroy(&B);
+    MatDestroy(&Y);
+  }
 } // namespace gearfem::fem

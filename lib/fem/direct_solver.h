@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gearfem::fem
 {
@@ -31,6 +32,10 @@ namespace gearfem::fem
                    unsigned int umfpack_max_dofs = 20000);
     /// x = A^{-1} b with the stored factors.
     void solve(const dealii::Vector<double> &b, dealii::Vector<double> &x) const;
+    /// X = A^{-1} B for k right-hand sides at once, column-major n x k in `columns`
+    /// (overwritten by the solutions). MUMPS solves the block in one call (KSPMatSolve),
+    /// UMFPACK column by column.
+    void solve_block(std::vector<double> &columns, unsigned int k) const;
     /// The solver actually used (mumps or umfpack).
     SolverKind kind() const { return kind_; }
     bool factorized() const;

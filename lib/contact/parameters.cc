@@ -1,0 +1,163 @@
+// `Contact` and `Solve` sections.
+#include "contact/parameters.h"
+
+#include "base/errors.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+
+namespace gearfem::contact
+{
+  namespace
+  {
+    const double pi = 3.14159265358979323846;
+    std::vector<double> doubles(const std::string &entry, const std::string &text)
+    {
+      std::vector<double> v;
+      for (const auto &s : dealii::Utilities::split_string_list(text, ','))
+        {
+          if (s.empty())
+            continue;
+          try
+            {
+              std::size_t pos = 0;
+              v.push_back(std::stod(s, &pos));
+              if (pos != s.size())
+                throw std::invalid_argument(s);
+            }
+          catch (const std::exception &)
+            {
+              throw InputError(entry, text, "a comma-separated list of numbers");
+            }
+        }
+      return v;
+    }
+  } // namespace
+
+  void declare_contact_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Method", "lagrange", Selection("lagrange|penalty"),
+                      "Contact enforcement: Lagrange multipliers (primal-dual active set) or "
+                      "penalty (Newton, consistent tangent). Units: none.");
+    prm.declare_entry("Penalty factor", "100", Double(),
+                      "Penalty pressure per unit penetration = factor * E / h (E the smaller "
+                      "Young's modulus, h the local face length). Units: none. Allowed: > 0.");
+    prm.declare_entry("Search distance", "0.3", Double(),
+                      "Slave nodes within this normal distance of the mating flank are contact "
+                      "candidates. Units: mm. Allowed: > 0.");
+    prm.declare_entry("Tolerance", "1e-9", Double(),
+                      "Relative tolerance on rotation, contact forces and torque. Units: none. "
+                      "Allowed: (0, 1e-2).");
+    prm.declare_entry("Max active-set iterations", "60", Integer(), "Units: none. Allowed: >= 1.");
+    prm.declare_entry("Max geometry iterations", "25", Integer(),
+                      "Re-linearisations of the gap on the exact geometry. Units: none. Allowed: >= 1.");
+    prm.declare_entry("Max load cuts", "4", Integer(),
+                      "Load-step halvings after a non-converged solve. Units: none. Allowed: >= 0.");
+    prm.declare_entry("Slave body", "auto", Selection("auto|1|2"),
+                      "Body carrying the slave nodes: auto = the softer gear (the pinion when "
+                      "equal). Units: none.");
+    prm.declare_entry("Friction coefficient", "0", Double(),
+                      "Coulomb friction. Only frictionless contact (0) is implemented. Units: none. "
+                      "Allowed: 0.");
+    prm.leave_subsection();
+  }
+
+  ContactOptions parse_contact_parameters(dealii::ParameterHandler &prm, double E1, double E2)
+  {
+    ContactOptions o;
+    prm.enter_subsection("Contact");
+    o.method                    = method_from_string(prm.get("Method"));
+    o.penalty_factor            = prm.get_double("Penalty factor");
+    o.search_distance           = prm.get_double("Search distance") * 1e-3;
+    o.tolerance                 = prm.get_double("Tolerance");
+    o.max_active_set_iterations = prm.get_integer("Max active-set iterations");
+    o.max_geometry_iterations   = prm.get_integer("Max geometry iterations");
+    o.max_load_cuts             = prm.get_integer("Max load cuts");
+    const std::string slave     = prm.get("Slave body");
+    o.slave = slave == "auto" ? (E2 < E1 ? 2 : 1) : std::stoi(slave);
+    const double mu = prm.get_double("Friction coefficient");
+    prm.leave_subsection();
+    if (mu != 0.0)
+      throw InputError("Contact/Friction coefficient", to_string_g(mu), "0 (frictionless only)",
+                       "friction is not implemented in this version");
+    o.validate();
+    return o;
+  }
+
+  void declare_solve_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    prm.enter_subsection("Solve");
+    prm.declare_entry("Positions", "cycle", Selection("cycle|named|list"),
+                      "cycle: N positions over the given pitches; named: the points of the line "
+                      "of action; list: explicit roll angles. Units: none.");
+    prm.declare_entry("Number of positions", "40", Integer(), "N for `cycle`. Units: none. Allowed: >= 1.");
+    prm.declare_entry("Pitches", "1", Double(), "Angular pitches covered by `cycle`. Units: none. Allowed: > 0.");
+    prm.declare_entry("Start", "A", Anything(),
+                      "First roll angle of `cycle`: A (start of contact) or a number. Units: deg "
+                      "(pinion roll angle, 0 at the pitch point C).");
+    prm.declare_entry("Named positions", "A, B, C, D, E", MultipleSelection("A|B|C|D|E"),
+                      "Points for `named`. Units: none.");
+    prm.declare_entry("Roll angles", "", Anything(),
+                      "Comma-separated pinion roll angles for `list`. Units: deg (0 at C).");
+    prm.declare_entry("Torques", "200", Anything(),
+                      "Comma-separated pinion torques, one sweep each. Units: N m. Allowed: > 0.");
+    prm.declare_entry("VTU", "named", Selection("none|named|all"),
+                      "Deformed-pair VTU files: none, at B/C/D (named), or every position. Units: none.");
+    prm.declare_entry("VTU displacement scale", "1", Double(),
+                      "Magnification of the displacement in the VTU files. Units: none. Allowed: > 0.");
+    prm.declare_entry("Plots", "true", Bool(), "Write the PNG plots (needs /usr/bin/python3 with matplotlib).");
+    prm.leave_subsection();
+  }
+
+  SolveParameters parse_solve_parameters(dealii::ParameterHandler &prm)
+  {
+    SolveParameters p;
+    prm.enter_subsection("Solve");
+    const std::string pos = prm.get("Positions");
+    p.positions   = pos == "cycle" ? SolveParameters::Positions::cycle :
+                    pos == "named" ? SolveParameters::Positions::named : SolveParameters::Positions::list;
+    p.n_positions = prm.get_integer("Number of positions");
+    p.pitches     = prm.get_double("Pitches");
+    const std::string start = prm.get("Start");
+    if (start == "A")
+      p.start_at_A = true;
+    else
+      {
+        const auto v = doubles("Solve/Start", start);
+        if (v.size() != 1)
+          throw InputError("Solve/Start", start, "A or one roll angle in deg");
+        p.start_at_A = false;
+        p.start      = v[0] * pi / 180;
+      }
+    p.names = dealii::Utilities::split_string_list(prm.get("Named positions"), ',');
+    for (const double a : doubles("Solve/Roll angles", prm.get("Roll angles")))
+      p.roll_angles.push_back(a * pi / 180);
+    p.torques = doubles("Solve/Torques", prm.get("Torques"));
+    const std::string vtu = prm.get("VTU");
+    p.vtu       = vtu == "none" ? SolveParameters::Vtu::none :
+                  vtu == "all" ? SolveParameters::Vtu::all : SolveParameters::Vtu::named;
+    p.vtu_scale = prm.get_double("VTU displacement scale");
+    p.plots     = prm.get_bool("Plots");
+    prm.leave_subsection();
+
+    if (p.positions == SolveParameters::Positions::cycle && p.n_positions < 1)
+      throw InputError("Solve/Number of positions", std::to_string(p.n_positions), ">= 1");
+    require_greater("Solve/Pitches", p.pitches, 0.0, "-");
+    if (p.positions == SolveParameters::Positions::list && p.roll_angles.empty())
+      throw InputError("Solve/Roll angles", "(empty)", "at least one roll angle when Positions = list");
+    if (p.positions == SolveParameters::Positions::named && p.names.empty())
+      throw InputError("Solve/Named positions", "(empty)", "at least one of A, B, C, D, E");
+    if (p.torques.empty())
+      throw InputError("Solve/Torques", "(empty)", "at least one torque > 0 N m");
+    for (const double t : p.torques)
+      if (!(t > 0))
+        throw InputError("Solve/Torques", to_string_g(t), "> 0 N m");
+    require_greater("Solve/VTU displacement scale", p.vtu_scale, 0.0, "-");
+    return p;
+  }
+} // namespace gearfem::contact

@@ -1,0 +1,635 @@
+// TwoBodyContact: candidate search, linearised gaps, flexibility cache, active-set and
+// penalty Newton solvers, outer geometric loop and load cutting.
+#include "contact/two_body.h"
+
+#include "base/errors.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <sstream>
+
+namespace gearfem::contact
+{
+  namespace
+  {
+    using Clock = std::chrono::steady_clock;
+    double since(Clock::time_point t0)
+    {
+      return std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+    Vec2 rotate(const Vec2 &v, double angle)
+    {
+      const double c = std::cos(angle), s = std::sin(angle);
+      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+    }
+    /// Inverse rigid placement: pair frame -> body frame.
+    Vec2 to_body(const geometry::Placement &p, const Vec2 &x)
+    {
+      return rotate(x - p.centre, -p.angle);
+    }
+
+    /// Result of the complementarity solve on a fixed linearisation.
+    struct NcpResult
+    {
+      bool ok = false;
+      std::string why;
+      Eigen::VectorXd lambda, gap;
+      double q = 0, tangent = 0, complementarity = 0;
+      int iterations = 0;
+      std::vector<char> active;
+    };
+
+    /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
+    /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
+    /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
+    NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                        const Eigen::VectorXd &ghat, Control control, double value, double q0,
+                        const Eigen::VectorXd &lambda0, int max_iterations)
+    {
+      const int m = int(W.rows());
+      NcpResult r;
+      r.q = control == Control::displacement ? value : q0;
+      r.lambda = Eigen::VectorXd::Zero(m);
+      r.gap    = ghat + a * r.q;
+      std::vector<char> active(m, 0);
+      bool any = false;
+      for (int k = 0; k < m; ++k)
+        if (lambda0.size() == m && lambda0[k] > 0)
+          active[k] = 1, any = true;
+      if (!any)
+        {
+          if (control == Control::load)
+            {
+              // The node that closes first as q grows.
+              int best = -1;
+              double qmin = 1e300;
+              for (int k = 0; k < m; ++k)
+                if (a[k] < 0 && ghat[k] / -a[k] < qmin)
+                  qmin = ghat[k] / -a[k], best = k;
+              if (best >= 0)
+                active[best] = 1;
+            }
+          else
+            for (int k = 0; k < m; ++k)
+              active[k] = r.gap[k] < 0;
+        }
+      std::set<std::vector<char>> seen;
+      for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations)
+        {
+          std::vector<int> A;
+          for (int k = 0; k < m; ++k)
+            if (active[k])
+              A.push_back(k);
+          const int n = int(A.size());
+          r.lambda.setZero();
+          if (control == Control::load)
+            {
+              if (n == 0)
+                {
+                  r.why = "no slave node can close its gap as the drive advances (no contact)";
+                  return r;
+                }
+              Eigen::MatrixXd K(n + 1, n + 1);
+              Eigen::VectorXd rhs(n + 1);
+              for (int i = 0; i < n; ++i)
+                {
+                  for (int j = 0; j < n; ++j)
+                    K(i, j) = W(A[i], A[j]);
+                  K(i, i) += D[A[i]];
+                  K(i, n) = K(n, i) = a[A[i]];
+                  rhs[i] = -ghat[A[i]];
+                }
+              K(n, n) = 0;
+              rhs[n]  = -value;
+              const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
+              if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
+                {
+                  r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
+                  return r;
+                }
+              for (int i = 0; i < n; ++i)
+                r.lambda[A[i]] = x[i];
+              r.q = x[n];
+            }
+          else if (n > 0)
+            {
+              Eigen::MatrixXd K(n, n);
+              Eigen::VectorXd rhs(n);
+              for (int i = 0; i < n; ++i)
+                {
+                  for (int j = 0; j < n; ++j)
+                    K(i, j) = W(A[i], A[j]);
+                  K(i, i) += D[A[i]];
+                  rhs[i] = -ghat[A[i]] - a[A[i]] * r.q;
+                }
+              const Eigen::VectorXd x = K.ldlt().solve(rhs);
+              for (int i = 0; i < n; ++i)
+                r.lambda[A[i]] = x[i];
+            }
+          r.gap = ghat + a * r.q + W * r.lambda;
+          std::vector<char> next(m, 0);
+          for (int k = 0; k < m; ++k)
+            {
+              const double c = 1.0 / W(k, k);
+              next[k]        = r.lambda[k] - c * r.gap[k] > 0;
+            }
+          if (next == active)
+            {
+              r.ok     = true;
+              r.active = active;
+              double num = 0, den = 0;
+              for (int k = 0; k < m; ++k)
+                {
+                  const double c  = 1.0 / W(k, k);
+                  const double gk = r.gap[k] + D[k] * r.lambda[k];
+                  const double v  = std::min(r.lambda[k], c * gk);
+                  num += v * v;
+                  den += r.lambda[k] * r.lambda[k];
+                }
+              r.complementarity = den > 0 ? std::sqrt(num / den) : 0.0;
+              if (n > 0)
+                {
+                  Eigen::MatrixXd K(n, n);
+                  Eigen::VectorXd aa(n);
+                  for (int i = 0; i < n; ++i)
+                    {
+                      for (int j = 0; j < n; ++j)
+                        K(i, j) = W(A[i], A[j]);
+                      K(i, i) += D[A[i]];
+                      aa[i] = a[A[i]];
+                    }
+                  r.tangent = aa.dot(K.ldlt().solve(aa));
+                }
+              return r;
+            }
+          if (!seen.insert(active).second)
+            {
+              r.why = "the active set cycles";
+              return r;
+            }
+          active = next;
+        }
+      r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
+      return r;
+    }
+  } // namespace
+
+  Method method_from_string(const std::string &s)
+  {
+    if (s == "penalty")
+      return Method::penalty;
+    if (s == "lagrange")
+      return Method::lagrange;
+    throw InputError("Contact/Method", s, "penalty | lagrange");
+  }
+  const char *to_string(Method m) { return m == Method::penalty ? "penalty" : "lagrange"; }
+
+  void ContactOptions::validate() const
+  {
+    require_greater("Contact/Penalty factor", penalty_factor, 0.0, "-");
+    require_greater("Contact/Search distance", search_distance, 0.0, "m");
+    if (!(tolerance > 0 && tolerance < 1e-2))
+      throw InputError("Contact/Tolerance", to_string_g(tolerance), "(0, 1e-2)");
+    if (max_active_set_iterations < 1)
+      throw InputError("Contact/Max active-set iterations", std::to_string(max_active_set_iterations), ">= 1");
+    if (max_geometry_iterations < 1)
+      throw InputError("Contact/Max geometry iterations", std::to_string(max_geometry_iterations), ">= 1");
+    if (max_load_cuts < 0)
+      throw InputError("Contact/Max load cuts", std::to_string(max_load_cuts), ">= 0");
+    if (slave != 1 && slave != 2)
+      throw InputError("Contact/Slave body", std::to_string(slave), "1 | 2");
+  }
+
+  TwoBodyContact::TwoBodyContact(const ContactSurface &s1, const ContactSurface &s2,
+                                 const ContactOptions &options, const Drive &drive)
+    : s1_(&s1)
+    , s2_(&s2)
+    , options_(options)
+    , drive_(drive)
+  {
+    options_.validate();
+    for (int b = 0; b < 2; ++b)
+      {
+        const ContactSurface &s = b == 0 ? s1 : s2;
+        auto &c                 = cache_[b];
+        c.index.assign(s.body().n_dofs(), -1);
+        for (const auto &nd : s.nodes())
+          for (const unsigned int d : {nd.dof_x, nd.dof_y})
+            if (c.index[d] < 0)
+              {
+                c.index[d] = int(c.dofs.size());
+                c.dofs.push_back(d);
+              }
+        c.C = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
+        c.have.assign(c.dofs.size(), 0);
+        c.u = Eigen::VectorXd::Zero(c.dofs.size());
+      }
+  }
+
+  std::size_t TwoBodyContact::cached_columns(int body) const
+  {
+    const auto &h = cache_[body - 1].have;
+    return std::size_t(std::count(h.begin(), h.end(), 1));
+  }
+
+  geometry::Placement TwoBodyContact::placed(const Scene &scene, int body, double q) const
+  {
+    geometry::Placement p = scene.placement[body - 1];
+    if (body == 1)
+      {
+        if (drive_.kind == Drive::Kind::rotation)
+          p.angle += q;
+        else
+          p.centre += q * drive_.direction;
+      }
+    return p;
+  }
+
+  void TwoBodyContact::ensure_columns(int body, const std::vector<int> &idx, double &seconds)
+  {
+    auto &c = cache_[body - 1];
+    std::vector<int> missing;
+    for (const int i : idx)
+      if (!c.have[i])
+        {
+          missing.push_back(i);
+          c.have[i] = 2; // queued
+        }
+    if (missing.empty())
+      return;
+    const auto t0 = Clock::now();
+    std::vector<unsigned int> dofs;
+    for (const int i : missing)
+      dofs.push_back(c.dofs[i]);
+    const std::vector<double> X = surface(body).body().compliance_columns(dofs, c.dofs);
+    const std::size_t n = c.dofs.size();
+    for (std::size_t j = 0; j < missing.size(); ++j)
+      {
+        for (std::size_t i = 0; i < n; ++i)
+          c.C(i, missing[j]) = X[j * n + i];
+        c.have[missing[j]] = 1;
+      }
+    seconds += since(t0);
+  }
+
+  Vec2 TwoBodyContact::displacement(int body, int node) const
+  {
+    const auto &c  = cache_[body - 1];
+    const auto &nd = surface(body).nodes()[node];
+    return Vec2(c.u[c.index[nd.dof_x]], c.u[c.index[nd.dof_y]]);
+  }
+
+  Vec2 TwoBodyContact::interpolate(int body, int face, const std::vector<double> &shape) const
+  {
+    const auto &f = surface(body).faces()[face];
+    Vec2 u(0, 0);
+    for (std::size_t j = 0; j < f.nodes.size(); ++j)
+      u += shape[j] * displacement(body, f.nodes[j]);
+    return u;
+  }
+
+  ContactSolution TwoBodyContact::solve(const Scene &scene, Control control, double value,
+                                        const ContactSolution *warm)
+  {
+    ContactSolution r = solve_once(scene, control, value, warm);
+    if (r.converged)
+      return r;
+    // Adaptive load cutting: reach the target through intermediate values, each solve
+    // warm-started from the previous one.
+    std::vector<std::string> history = r.history;
+    const double start = warm ? (control == Control::load ? warm->load : warm->q) : 0.0;
+    std::function<ContactSolution(const ContactSolution *, double, double, int)> path =
+      [&](const ContactSolution *from, double v0, double v1, int depth) -> ContactSolution {
+      ContactSolution s = solve_once(scene, control, v1, from);
+      if (s.converged || depth >= options_.max_load_cuts)
+        {
+          s.load_cuts = depth;
+          return s;
+        }
+      history.push_back("load cut: " + to_string_g(v0) + " -> " + to_string_g(0.5 * (v0 + v1)) +
+                        " -> " + to_string_g(v1));
+      ContactSolution mid = path(from, v0, 0.5 * (v0 + v1), depth + 1);
+      if (!mid.converged)
+        return mid;
+      ContactSolution end = path(&mid, 0.5 * (v0 + v1), v1, depth + 1);
+      end.load_cuts       = std::max(end.load_cuts, mid.load_cuts);
+      return end;
+    };
+    if (options_.max_load_cuts > 0)
+      {
+        ContactSolution s = path(warm, start, 0.5 * (start + value), 1);
+        if (s.converged)
+          {
+            s = path(&s, 0.5 * (start + value), value, 1);
+            if (s.converged)
+              return s;
+          }
+        history.insert(history.end(), s.history.begin(), s.history.end());
+      }
+    std::ostringstream msg;
+    msg << "contact did not converge (" << to_string(options_.method) << ", "
+        << (control == Control::load ? "load " : "drive ") << to_string_g(value)
+        << ") after " << options_.max_load_cuts << " load cuts; residual history:";
+    for (const auto &h : history)
+      msg << "\n    " << h;
+    throw SolverError(msg.str());
+  }
+
+  ContactSolution TwoBodyContact::solve_once(const Scene &scene, Control control, double value,
+                                             const ContactSolution *warm)
+  {
+    const int S = options_.slave, M = 3 - S;
+    const ContactSurface &ss = surface(S), &ms = surface(M);
+    const auto &snodes       = ss.nodes();
+    ContactSolution out;
+    double q = control == Control::displacement ? value : (warm ? warm->q : 0.0);
+    if (control == Control::load && warm && warm->load > 0 && value > 0)
+      q = warm->q * (value / warm->load); // secant start along the previous load path
+
+    // Initial elastic state: from the warm start's forces, else unloaded.
+    for (auto &c : cache_)
+      c.u.setZero();
+    std::vector<double> lambda_node(snodes.size(), 0.0);
+    if (warm)
+      {
+        const double scale = (control == Control::load && warm->load > 0) ? value / warm->load : 1.0;
+        for (const auto &p : warm->points)
+          lambda_node[p.node] = p.force * scale;
+        for (int b = 1; b <= 2; ++b)
+          {
+            auto &c = cache_[b - 1];
+            std::vector<int> idx;
+            for (const auto &[d, f] : warm->forces[b - 1])
+              idx.push_back(c.index[d]);
+            ensure_columns(b, idx, out.t_compliance);
+            for (const auto &[d, f] : warm->forces[b - 1])
+              c.u += (f * scale) * c.C.col(c.index[d]);
+          }
+      }
+
+    // Material scale for the penalty: the smaller E, thickness of the slave body.
+    const double E = std::min(s1_->body().material().youngs_modulus, s2_->body().material().youngs_modulus);
+    const double thickness = ss.body().material().thickness;
+    std::vector<double> node_h(snodes.size(), 0.0);
+    for (const auto &f : ss.faces())
+      {
+        const auto &pc = ss.body().mesh().pieces[f.piece];
+        const double L = (pc.curve.point(f.t_hi) - pc.curve.point(f.t_lo)).norm();
+        for (const int n : f.nodes)
+          node_h[n] = std::max(node_h[n], L);
+      }
+
+    struct Candidate
+    {
+      int node, face;
+      Projection pr;
+      std::vector<double> shape;
+      double g;
+      Vec2 n_pair;
+    };
+    std::vector<int> prev_active;
+    double prev_q = q;
+    const auto velocity = [&](const Vec2 &x) {
+      if (drive_.kind == Drive::Kind::translation)
+        return drive_.direction;
+      const Vec2 c = scene.placement[0].centre;
+      return Vec2(-(x.y() - c.y()), x.x() - c.x());
+    };
+
+    for (int it = 0; it < options_.max_geometry_iterations; ++it)
+      {
+        auto t0 = Clock::now();
+        const geometry::Placement PS = placed(scene, S, q), PM = placed(scene, M, q);
+        std::vector<Candidate> cand;
+        for (std::size_t i = 0; i < snodes.size(); ++i)
+          {
+            if (!scene.slave_nodes.empty() && !scene.slave_nodes[i])
+              continue;
+            const Vec2 xs = PS.apply(snodes[i].x) + PS.apply_vector(displacement(S, int(i)));
+            const Vec2 y  = to_body(PM, xs);
+            Candidate c;
+            c.node = int(i);
+            c.pr   = ms.project(y, options_.search_distance, scene.master_pieces);
+            if (c.pr.piece < 0)
+              continue;
+            // Closest point on the displaced master: project y - u_m(t), fixed point.
+            for (int k = 0; k < 3; ++k)
+              {
+                c.face          = ms.face_at(c.pr.piece, c.pr.t, c.shape);
+                const Vec2 um   = interpolate(M, c.face, c.shape);
+                const auto next = ms.project(y - um, options_.search_distance, scene.master_pieces);
+                if (next.piece < 0)
+                  break;
+                const bool same = next.piece == c.pr.piece && std::abs(next.t - c.pr.t) < 1e-12;
+                c.pr            = next;
+                if (same)
+                  break;
+              }
+            c.face        = ms.face_at(c.pr.piece, c.pr.t, c.shape);
+            const Vec2 um = interpolate(M, c.face, c.shape);
+            c.g           = (y - c.pr.point - um).dot(c.pr.normal);
+            if (std::abs(c.g) > options_.search_distance)
+              continue;
+            c.n_pair = PM.apply_vector(c.pr.normal);
+            cand.push_back(std::move(c));
+          }
+        out.t_search += since(t0);
+        const int m = int(cand.size());
+        if (m == 0)
+          {
+            if (control == Control::displacement)
+              {
+                out.converged = true, out.q = q, out.load = 0;
+                out.history.push_back("no candidate slave node within the search distance");
+                return out;
+              }
+            out.history.push_back("iteration " + std::to_string(it) +
+                                  ": no slave node within the search distance of the master");
+            throw SolverError("no contact found: no slave node lies within the contact search distance (" +
+                              to_string_g(options_.search_distance * 1e3) +
+                              " mm) of the mating body; check backlash, centre distance and positions");
+          }
+
+        // Linearisation: B (per body, on the universe), a, ghat, D.
+        t0 = Clock::now();
+        std::vector<std::vector<std::pair<int, double>>> Bcol[2];
+        Bcol[0].assign(m, {});
+        Bcol[1].assign(m, {});
+        Eigen::VectorXd a(m), ghat(m), D(m), lambda0(m);
+        std::vector<int> used[2];
+        for (int k = 0; k < m; ++k)
+          {
+            const auto &c   = cand[k];
+            const auto &nd  = snodes[c.node];
+            const Vec2 nS   = rotate(c.n_pair, -PS.angle);
+            const Vec2 nM   = c.pr.normal;
+            auto &cS        = cache_[S - 1];
+            auto &cM        = cache_[M - 1];
+            Bcol[S - 1][k].push_back({cS.index[nd.dof_x], nS.x()});
+            Bcol[S - 1][k].push_back({cS.index[nd.dof_y], nS.y()});
+            const auto &face = ms.faces()[c.face];
+            for (std::size_t j = 0; j < face.nodes.size(); ++j)
+              {
+                const auto &mn = ms.nodes()[face.nodes[j]];
+                Bcol[M - 1][k].push_back({cM.index[mn.dof_x], -c.shape[j] * nM.x()});
+                Bcol[M - 1][k].push_back({cM.index[mn.dof_y], -c.shape[j] * nM.y()});
+              }
+            a[k] = S == 1 ? c.n_pair.dot(velocity(PS.apply(nd.x))) :
+                            -c.n_pair.dot(velocity(PM.apply(c.pr.point)));
+            double btu = 0;
+            for (int b = 0; b < 2; ++b)
+              for (const auto &[i, v] : Bcol[b][k])
+                btu += v * cache_[b].u[i];
+            ghat[k] = c.g - a[k] * q - btu;
+            if (options_.method == Method::penalty)
+              {
+                const double eps = options_.penalty_factor * E * thickness * nd.weight / node_h[c.node];
+                D[k]             = 1.0 / eps;
+              }
+            else
+              D[k] = 0.0;
+            lambda0[k] = lambda_node[c.node];
+            for (int b = 0; b < 2; ++b)
+              for (const auto &[i, v] : Bcol[b][k])
+                used[b].push_back(i);
+          }
+        for (int b = 0; b < 2; ++b)
+          {
+            std::sort(used[b].begin(), used[b].end());
+            used[b].erase(std::unique(used[b].begin(), used[b].end()), used[b].end());
+          }
+        for (int b = 1; b <= 2; ++b)
+          ensure_columns(b, used[b - 1], out.t_compliance);
+
+        // W = sum_b B_b^T C_b B_b on the used universe entries.
+        Eigen::MatrixXd W = Eigen::MatrixXd::Zero(m, m);
+        for (int b = 0; b < 2; ++b)
+          {
+            const auto &u = used[b];
+            std::vector<int> pos(cache_[b].dofs.size(), -1);
+            for (std::size_t i = 0; i < u.size(); ++i)
+              pos[u[i]] = int(i);
+            Eigen::MatrixXd Bb = Eigen::MatrixXd::Zero(u.size(), m);
+            for (int k = 0; k < m; ++k)
+              for (const auto &[i, v] : Bcol[b][k])
+                Bb(pos[i], k) += v;
+            Eigen::MatrixXd Cs(u.size(), u.size());
+            for (std::size_t i = 0; i < u.size(); ++i)
+              for (std::size_t j = 0; j < u.size(); ++j)
+                Cs(i, j) = cache_[b].C(u[i], u[j]);
+            Cs = 0.5 * (Cs + Cs.transpose()).eval();
+            W.noalias() += Bb.transpose() * Cs * Bb;
+          }
+
+        NcpResult ncp = solve_ncp(W, D, a, ghat, control, value, q, lambda0,
+                                  options_.max_active_set_iterations);
+        out.active_set_iterations += ncp.iterations;
+        out.t_solve += since(t0);
+        if (!ncp.ok)
+          {
+            out.history.push_back("iteration " + std::to_string(it) + ": " + ncp.why);
+            if (ncp.why.find("no contact") != std::string::npos ||
+                ncp.why.find("singular") != std::string::npos)
+              throw SolverError("no contact found: " + ncp.why);
+            return out; // not converged: the caller cuts the load
+          }
+
+        // New elastic state on the universes.
+        for (int b = 0; b < 2; ++b)
+          {
+            auto &c = cache_[b];
+            c.u.setZero();
+            for (int k = 0; k < m; ++k)
+              if (ncp.lambda[k] != 0)
+                for (const auto &[i, v] : Bcol[b][k])
+                  c.u += (ncp.lambda[k] * v) * c.C.col(i);
+          }
+        std::vector<int> active;
+        double lmax = 0, dl = 0;
+        std::vector<double> lambda_new(snodes.size(), 0.0);
+        for (int k = 0; k < m; ++k)
+          {
+            lambda_new[cand[k].node] = ncp.lambda[k];
+            if (ncp.active[k])
+              active.push_back(cand[k].node);
+          }
+        for (std::size_t i = 0; i < snodes.size(); ++i)
+          {
+            lmax = std::max(lmax, std::abs(lambda_new[i]));
+            dl   = std::max(dl, std::abs(lambda_new[i] - lambda_node[i]));
+          }
+        lambda_node = lambda_new;
+        const double dq    = std::abs(ncp.q - prev_q);
+        const double qs    = std::max(std::abs(ncp.q), 1e-300);
+        const double dlrel = lmax > 0 ? dl / lmax : 0.0;
+        q                  = ncp.q;
+        std::ostringstream h;
+        h << "iteration " << it << ": candidates " << m << ", active " << active.size()
+          << ", active-set iterations " << ncp.iterations << ", q " << to_string_g(q)
+          << ", |dq|/q " << to_string_g(dq / qs) << ", |dlambda|/lambda " << to_string_g(dlrel)
+          << ", complementarity " << to_string_g(ncp.complementarity);
+        out.history.push_back(h.str());
+
+        const bool settled = it > 0 && active == prev_active &&
+                             (control == Control::displacement || dq <= options_.tolerance * qs) &&
+                             dlrel <= std::sqrt(options_.tolerance) * 1e-2;
+        prev_active = active;
+        prev_q      = q;
+        if (!settled)
+          continue;
+
+        // Converged: fill the solution.
+        out.converged       = true;
+        out.q               = q;
+        out.load            = -a.dot(ncp.lambda);
+        out.tangent         = ncp.tangent;
+        out.complementarity = ncp.complementarity;
+        out.n_active        = int(active.size());
+        out.geometry_iterations = it + 1;
+        out.max_penetration = 0;
+        std::vector<double> node_force(snodes.size(), 0.0);
+        for (int k = 0; k < m; ++k)
+          node_force[cand[k].node] = ncp.lambda[k];
+        const std::vector<double> node_p = ss.recover_pressure(node_force, thickness);
+        const geometry::Placement PSf = placed(scene, S, q);
+        const auto &mpieces           = ms.body().mesh().pieces;
+        for (int k = 0; k < m; ++k)
+          {
+            const auto &c  = cand[k];
+            const auto &nd = snodes[c.node];
+            ContactPoint p;
+            p.node         = c.node;
+            p.slave_tooth  = nd.tooth;
+            p.master_piece = c.pr.piece;
+            p.master_tooth = mpieces[c.pr.piece].tooth;
+            p.master_t     = c.pr.t;
+            p.x            = PSf.apply(nd.x);
+            p.normal       = c.n_pair;
+            p.gap          = ncp.gap[k];
+            p.force        = ncp.lambda[k];
+            p.weight       = nd.weight;
+            p.pressure     = node_p[c.node];
+            p.arm          = a[k];
+            out.max_penetration = std::max(out.max_penetration, -p.gap);
+            out.points.push_back(p);
+          }
+        for (int b = 0; b < 2; ++b)
+          {
+            std::vector<double> f(cache_[b].dofs.size(), 0.0);
+            for (int k = 0; k < m; ++k)
+              for (const auto &[i, v] : Bcol[b][k])
+                f[i] += ncp.lambda[k] * v;
+            for (std::size_t i = 0; i < f.size(); ++i)
+              if (f[i] != 0)
+                out.forces[b].emplace_back(cache_[b].dofs[i], f[i]);
+          }
+        return out;
+      }
+    out.history.push_back("the geometric iteration did not settle in " +
+                          std::to_string(options_.max_geometry_iterations) + " iterations");
+    return out;
+  }
+} // namespace gearfem::contact

@@ -1,0 +1,169 @@
+#pragma once
+// Frictionless contact between two linear-elastic bodies, each with its own factorised
+// body-frame stiffness (fem::ElasticBody, clamped bore or edges). Body 2 is fixed; body 1
+// moves rigidly by one drive coordinate q (a rotation about its centre [rad] or a
+// translation along a direction [m]) applied kinematically: the rigid placement is exact
+// and only the elastic part is a displacement. SI units.
+//
+// Formulation (node-to-segment, single pass; Wriggers, Computational Contact Mechanics,
+// 2nd ed. 2006, ch. 4-6). Slave nodes s of one body, master = exact curves of the other
+// body plus its displacement interpolated by the face shape functions N_j. Normal gap
+//   g_s = (x_s + u_s - x_m(t) - sum_j N_j u_j) . n
+// with n the master's outward normal. Linearised about the current state:
+//   g = g_hat + a q + B^T u,   u = C B lambda   =>   g = g_hat + a q + W lambda,
+// where lambda_s >= 0 is the normal contact force of node s [N], B its nodal force
+// directions, C = K^-1 restricted to the surface DoFs (exact flexibility of the
+// factorised body, computed column by column with one block solve and cached), and
+// W = B^T C B the Delassus operator. This is the exact Schur complement of the assembled
+// two-body system [K B; B^T 0] on the contact unknowns: no approximation beyond the
+// linearisation of the gap, which the outer loop re-evaluates on the exact geometry.
+//
+//  - lagrange: primal-dual active set (semismooth Newton on the NCP function
+//    lambda - max(0, lambda - c g), Hintermueller, Ito & Kunisch 2002, SIAM J. Optim.
+//    13(3)); stops when the active set is unchanged and the complementarity residual is
+//    below tolerance.
+//  - penalty: lambda_s = eps_s <-g_s>, eps_s = factor * E * b * w_s / h_s (E/h scaling);
+//    Newton with the consistent tangent (W + eps^-1) on the current active set, which is
+//    rebuilt whenever the set of penetrating nodes changes.
+// Load control (target generalised force T = -a^T lambda) adds q as an unknown to the same
+// Newton system (bordered), so torque targeting is a Newton iteration with the consistent
+// tangent dT/dq = a_A^T (W_AA + D)^-1 a_A, warm-started from the previous position.
+#include "contact/surface.h"
+#include "geometry/pair.h"
+
+#include <Eigen/Dense>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gearfem::contact
+{
+  enum class Method
+  {
+    penalty,
+    lagrange
+  };
+  Method method_from_string(const std::string &s); ///< "penalty" | "lagrange", else InputError
+  const char *to_string(Method m);
+
+  struct ContactOptions
+  {
+    Method method = Method::lagrange;
+    /// Penalty stiffness factor kappa: pressure = kappa E / h (-g), E the smaller Young's
+    /// modulus, h the local slave face length. > 0.
+    double penalty_factor = 100.0;
+    /// Slave nodes farther than this from the master (either side) are not candidates [m].
+    double search_distance = 0.3e-3;
+    /// Relative tolerance of the drive coordinate, forces and torque.
+    double tolerance = 1e-9;
+    int max_active_set_iterations = 60;
+    int max_geometry_iterations   = 25;
+    /// Load-step cuts (halvings) tried after a non-converged solve.
+    int max_load_cuts = 4;
+    /// Body that carries the slave nodes (1 or 2); the other is the master.
+    int slave = 1;
+    /// Throws InputError naming the `Contact` entry.
+    void validate() const;
+  };
+
+  /// The rigid drive of body 1.
+  struct Drive
+  {
+    enum class Kind
+    {
+      rotation,   ///< about body 1's placement centre, q in rad (counter-clockwise > 0)
+      translation ///< along `direction`, q in m
+    };
+    Kind kind = Kind::rotation;
+    Vec2 direction = Vec2(0, 1);
+  };
+
+  /// One slave node in contact (or candidate) at the solution.
+  struct ContactPoint
+  {
+    int node = -1;         ///< slave surface node
+    int slave_tooth = -1, master_tooth = -1;
+    int master_piece = -1;
+    double master_t = 0;
+    Vec2 x;                ///< slave node, rigidly placed (undeformed) [m], pair frame
+    Vec2 normal;           ///< master outward normal, pair frame
+    double gap = 0;        ///< normal gap at the solution [m] (< 0: penalty penetration)
+    double force = 0;      ///< normal force lambda >= 0 [N]
+    double pressure = 0;   ///< recovered contact pressure [Pa] (ContactSurface::recover_pressure)
+    double weight = 0;     ///< consistent nodal weight w [m]
+    double arm = 0;        ///< a_s = dg/dq [m/rad or -]
+  };
+
+  struct ContactSolution
+  {
+    bool converged = false;
+    double q = 0;              ///< drive coordinate [rad] or [m]
+    double load = 0;           ///< generalised force on body 1, -a^T lambda [N m] or [N]
+    double tangent = 0;        ///< dload/dq at the converged active set [N m/rad] or [N/m]
+    std::vector<ContactPoint> points; ///< all candidate slave nodes
+    int n_active = 0;
+    int active_set_iterations = 0, geometry_iterations = 0, load_cuts = 0;
+    double complementarity = 0;       ///< ||min(lambda, c g)|| / ||lambda|| (Lagrange)
+    double max_penetration = 0;       ///< max(-g) over candidates [m]
+    std::vector<std::string> history; ///< one line per geometry iteration
+    /// Nodal contact forces in each body frame (DoF, value) [N].
+    std::vector<std::pair<unsigned int, double>> forces[2];
+    double t_search = 0, t_compliance = 0, t_solve = 0; ///< wall times [s]
+  };
+
+  /// Which slave nodes and master pieces take part at one position (empty: all).
+  struct Scene
+  {
+    geometry::Placement placement[2]; ///< rigid placements at q = 0
+    std::vector<bool> slave_nodes;    ///< per slave surface node
+    std::vector<bool> master_pieces;  ///< per master mesh piece
+  };
+
+  enum class Control
+  {
+    displacement, ///< q given
+    load          ///< generalised force given, q unknown
+  };
+
+  class TwoBodyContact
+  {
+  public:
+    TwoBodyContact(const ContactSurface &surface1, const ContactSurface &surface2,
+                   const ContactOptions &options, const Drive &drive = Drive());
+
+    /// Solve one configuration. `warm` (may be null) seeds q and the contact forces.
+    /// Throws SolverError with the residual history if it does not converge after the
+    /// load cuts, and SolverError("no contact") when nothing can carry a load.
+    ContactSolution solve(const Scene &scene, Control control, double value,
+                          const ContactSolution *warm = nullptr);
+
+    const ContactSurface &surface(int body) const { return body == 1 ? *s1_ : *s2_; }
+    const ContactOptions &options() const { return options_; }
+    /// Number of flexibility columns computed so far per body (cache statistics).
+    std::size_t cached_columns(int body) const;
+    /// Rigid placement of body `body` at drive coordinate q.
+    geometry::Placement placed(const Scene &scene, int body, double q) const;
+
+  private:
+    struct Linearisation;
+    struct BodyCache
+    {
+      std::vector<unsigned int> dofs;             ///< universe: the surface DoFs
+      std::vector<int> index;                     ///< global DoF -> universe index (-1)
+      Eigen::MatrixXd C;                          ///< flexibility on the universe [m/N]
+      std::vector<char> have;                     ///< column computed
+      Eigen::VectorXd u;                          ///< current elastic displacement on the universe
+    };
+    ContactSolution solve_once(const Scene &scene, Control control, double value,
+                               const ContactSolution *warm);
+    void ensure_columns(int body, const std::vector<int> &universe_indices, double &seconds);
+    Vec2 displacement(int body, int node) const;
+    Vec2 interpolate(int body, int face, const std::vector<double> &shape) const;
+
+    const ContactSurface *s1_, *s2_;
+    ContactOptions options_;
+    Drive drive_;
+    BodyCache cache_[2];
+  };
+} // namespace gearfem::contact
