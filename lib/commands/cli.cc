@@ -148,7 +148,16 @@ namespace gearfem::commands
                              "file not found");
           try
             {
-              prm.parse_input(ctx.input_file.string(), "", false, false);
+              // A case file may carry the sections of other commands (demo.prm serves
+              // profile, mesh and solve): check it against every command's parameters, so
+              // that a misspelt entry is still an error, then read this command's part.
+              dealii::ParameterHandler all;
+              for (const auto &other : registry())
+                if (other.declare && other.parse_input)
+                  other.declare(all);
+              declare_output(all);
+              all.parse_input(ctx.input_file.string(), "", false, false);
+              prm.parse_input(ctx.input_file.string(), "", true, false);
             }
           catch (const dealii::ExceptionBase &e)
             {

@@ -4,6 +4,7 @@
 #include "base/errors.h"
 #include "base/table.h"
 #include "commands/command.h"
+#include "commands/hdf5_tables.h"
 #include "dynamics/analysis.h"
 #include "dynamics/case.h"
 #include "dynamics/parameters.h"
@@ -12,7 +13,6 @@
 #include "geometry/pair.h"
 #include "geometry/profile.h"
 
-#include <deal.II/base/hdf5.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
@@ -107,31 +107,6 @@ namespace gearfem::commands
       return t;
     }
 
-    /// All tables in one HDF5 file (one group per table, one dataset per column named like
-    /// the CSV header "name [unit]"), written to a temporary name and renamed.
-    void write_hdf5(const std::vector<std::pair<std::string, Table>> &tables,
-                    const std::filesystem::path &file)
-    {
-      TemporaryPath tmp(file);
-      {
-        dealii::HDF5::File f(tmp.path().string(), dealii::HDF5::File::FileAccessMode::create);
-        f.set_attribute("program", std::string("gearfem dynamics"));
-        for (const auto &[name, table] : tables)
-          {
-            if (table.n_rows() == 0)
-              continue;
-            auto g = f.create_group(name);
-            for (std::size_t c = 0; c < table.n_columns(); ++c)
-              {
-                std::vector<double> col(table.n_rows());
-                for (std::size_t i = 0; i < table.n_rows(); ++i)
-                  col[i] = table.row(i)[c];
-                g.write_dataset(table.headers()[c], col);
-              }
-          }
-      }
-      tmp.commit();
-    }
 
     /// The seed 000 torque table T(theta, delta) (Gkimisis 2019 eqs. 3.10-3.17) of the
     /// Weber/Cornell model (lib/analytical) on the generated pair, as a dynamics TableLaw:
@@ -260,7 +235,7 @@ namespace gearfem::commands
         out << "warning: the mesh-force table was evaluated outside its range " << clamps
             << " times (stiffness clamped); see summary.txt\n";
       write_file_atomically(ctx.output_dir / "summary.txt", summary.str());
-      write_hdf5(h5_tables, ctx.output_dir / "response.h5");
+      write_hdf5_tables(h5_tables, ctx.output_dir / "response.h5", {{"program", "gearfem dynamics"}});
       run_plot_script("plot_dynamics.py", {ctx.output_dir.string()}, ctx.out);
     }
   } // namespace

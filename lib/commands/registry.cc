@@ -8,6 +8,7 @@ namespace gearfem::commands
   Command rate_command();
   Command mesh_command();
   Command bench_command();
+  Command solve_command();
 
   const std::vector<Command> &registry()
   {
@@ -16,6 +17,7 @@ namespace gearfem::commands
       dynamics_command(),
       rate_command(),
       mesh_command(),
+      solve_command(),
       bench_command(),
     };
     return commands;

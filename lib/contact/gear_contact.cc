@@ -207,7 +207,10 @@ namespace gearfem::contact
         const double rho1 = tp.radius_pinion > rb1 ? std::sqrt(tp.radius_pinion * tp.radius_pinion - rb1 * rb1) : 0;
         const double rho2 = tp.radius_gear > rb2 ? std::sqrt(tp.radius_gear * tp.radius_gear - rb2 * rb2) : 0;
         const auto &k1 = pair_->gear(1).radii(), &k2 = pair_->gear(2).radii();
-        tp.on_involute = tp.radius_pinion <= k1.tip_form + 1e-9 && tp.radius_gear <= k2.tip_form + 1e-9 && rho1 > 0 && rho2 > 0;
+        // A peak within 2 % of a module of the end of either flank is corner (tip) contact.
+        const double m_n = pair_->gear(1).parameters().rack.module;
+        tp.on_involute   = tp.radius_pinion < k1.tip_form - 0.02 * m_n &&
+                         tp.radius_gear < k2.tip_form - 0.02 * m_n && rho1 > 0 && rho2 > 0;
         if (rho1 > 0 && rho2 > 0)
           {
             HertzCase hc;

@@ -2,6 +2,9 @@
 #include "contact/parameters.h"
 
 #include "base/errors.h"
+#include "fem/parameters.h"
+#include "geometry/parameters.h"
+#include "mesh/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -159,5 +162,71 @@ namespace gearfem::contact
         throw InputError("Solve/Torques", to_string_g(t), "> 0 N m");
     require_greater("Solve/VTU displacement scale", p.vtu_scale, 0.0, "-");
     return p;
+  }
+
+  void declare_gear_contact_input(dealii::ParameterHandler &prm)
+  {
+    geometry::declare_geometry_parameters(prm);
+    geometry::declare_material_parameters(prm);
+    mesh::declare_mesh_parameters(prm);
+    fem::declare_fe_parameters(prm);
+    declare_contact_parameters(prm);
+    declare_solve_parameters(prm);
+  }
+
+  GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm)
+  {
+    GearContactInput in;
+    const auto gi = geometry::parse_geometry_parameters(prm);
+    const auto pm = geometry::parse_material_parameters(prm);
+    in.pair       = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
+    for (int i = 0; i < 2; ++i)
+      {
+        in.mesh[i]     = mesh::parse_mesh_parameters(prm, i + 1);
+        in.material[i] = fem::elasticity(i == 0 ? pm.gear1 : pm.gear2,
+                                         in.pair->gear(i + 1).parameters().face_width, pm.plane_strain);
+        (void)mesh::gear_domain(in.pair->gear(i + 1), in.mesh[i]); // outline checks, no gmsh
+      }
+    in.fe      = fem::parse_fe_parameters(prm);
+    in.contact = parse_contact_parameters(prm, in.material[0].youngs_modulus, in.material[1].youngs_modulus);
+    in.solve   = parse_solve_parameters(prm);
+    (void)in.positions(); // checks the position list
+    return in;
+  }
+
+  std::vector<std::pair<std::string, double>> GearContactInput::positions() const
+  {
+    std::vector<std::pair<std::string, double>> out;
+    const auto &s = solve;
+    switch (s.positions)
+      {
+        case SolveParameters::Positions::cycle:
+          {
+            const double start = s.start_at_A ? pair->point("A").roll_angle : s.start;
+            for (const double phi : cycle_positions(*pair, s.n_positions, s.pitches, start))
+              out.emplace_back("", phi);
+            break;
+          }
+        case SolveParameters::Positions::named:
+          for (const auto &n : s.names)
+            out.emplace_back(n, pair->point(n).roll_angle);
+          break;
+        case SolveParameters::Positions::list:
+          for (const double phi : s.roll_angles)
+            out.emplace_back("", phi);
+          break;
+      }
+    // Name the cycle positions that coincide with a point of the line of action.
+    for (auto &[name, phi] : out)
+      if (name.empty())
+        for (const char *n : {"A", "B", "C", "D", "E"})
+          if (std::abs(phi - pair->point(n).roll_angle) < 1e-9)
+            name = n;
+    return out;
+  }
+
+  std::unique_ptr<GearContactModel> GearContactInput::model() const
+  {
+    return std::make_unique<GearContactModel>(*pair, mesh, material, fe, contact);
   }
 } // namespace gearfem::contact

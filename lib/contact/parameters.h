@@ -1,7 +1,13 @@
 #pragma once
 // ParameterHandler binding of the `Contact` and `Solve` sections (engineering units at the
 // interface: mm, deg, N m, urad; SI in the structs).
+#include "contact/gear_contact.h"
 #include "contact/two_body.h"
+#include "fem/elastic_body.h"
+#include "geometry/pair.h"
+#include "mesh/gear_mesh.h"
+
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -41,6 +47,23 @@ namespace gearfem::contact
     double vtu_scale = 1.0; ///< displacement magnification in the VTU files
     bool plots       = true;
   };
+
+  /// Everything `gearfem solve` reads, parsed and checked.
+  struct GearContactInput
+  {
+    std::unique_ptr<geometry::GearPair> pair;
+    mesh::GearMeshParameters mesh[2];
+    fem::Elasticity material[2];
+    fem::FeOptions fe;
+    ContactOptions contact;
+    SolveParameters solve;
+    /// The positions of the `Solve` section: (name, roll angle [rad]).
+    std::vector<std::pair<std::string, double>> positions() const;
+    std::unique_ptr<GearContactModel> model() const;
+  };
+  /// Declare Rack, Gear 1/2, Pair, Material, Mesh, Finite elements, Contact and Solve.
+  void declare_gear_contact_input(dealii::ParameterHandler &prm);
+  GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm);
 
   void declare_contact_parameters(dealii::ParameterHandler &prm);
   /// Read and validate `Contact` (InputError). `E1`, `E2` resolve `Slave body = auto` (the

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <sstream>
 #include <limits>
 
 namespace gearfem::geometry
@@ -440,5 +442,29 @@ namespace gearfem::geometry
         k += kk;
       }
     return k;
+  }
+
+  std::string geometry_fingerprint(const GearPair &pair)
+  {
+    std::ostringstream s;
+    s.precision(12);
+    for (int i = 1; i <= 2; ++i)
+      {
+        const auto &g = pair.gear(i);
+        const auto &p = g.parameters();
+        s << g.teeth() << ' ' << p.rack.module << ' ' << p.rack.pressure_angle << ' ' << p.profile_shift << ' '
+          << p.face_width << ' ' << g.radii().tip << ' ' << g.radii().root << ' ' << g.radii().base
+          << ' ' << g.tip_thickness() << ' ' << p.relief.amount << ' ' << p.rack.tip_radius << ';';
+      }
+    s << pair.center_distance();
+    std::uint64_t h = 1469598103934665603ull;
+    for (const char c : s.str())
+      {
+        h ^= static_cast<unsigned char>(c);
+        h *= 1099511628211ull;
+      }
+    std::ostringstream hex;
+    hex << std::hex << h;
+    return hex.str();
   }
 } // namespace gearfem::geometry

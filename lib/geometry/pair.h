@@ -111,6 +111,12 @@ namespace gearfem::geometry
     double signed_gap(double beta, double phi1) const;
   };
 
+  /// A short hex fingerprint (FNV-1a, 64 bit) of the pair's defining numbers: teeth, module,
+  /// pressure angle, shifts, face widths, centre distance, and the tip, root and base radii
+  /// (12 significant digits). Result files carry it so that tables are never applied to a
+  /// different geometry.
+  std::string geometry_fingerprint(const GearPair &pair);
+
   /// Seed 001 (Siasos): minimum number of teeth free of undercut,
   /// Z_min = 2[(h_fP* - x) - rho_fP*(1 - sin a)] / sin^2 a.
   double minimum_teeth_without_undercut(double alpha, double dedendum, double root_radius,

@@ -1,0 +1,67 @@
+#pragma once
+// HDF5 mesh-table files: the versioned contract between the FE calibration (which writes
+// T(theta, delta) or k(theta, F) tables) and the dynamics module (which reads them into a
+// dynamics::MeshTable for TableLaw). Layout, format version 1 (see docs/mesh-tables.md):
+//
+//   /                         attributes: format = "gearfem-mesh-table" (string)
+//                                         format_version = 1 (integer)
+//                                         geometry_hash, source, created (strings)
+//   /table                    group, attributes: period [rad], base_radius [m],
+//                                                valid_min, valid_max (second axis, its unit)
+//   /table/theta              float64 [n_theta], attribute unit = "rad"
+//   /table/delta              float64 [n_second], unit = "m"   (torque tables), or
+//   /table/load               float64 [n_second], unit = "N"   (stiffness tables)
+//   /table/values             float64 [n_theta][n_second] (row-major, theta slowest),
+//                             attributes unit = "N*m" | "N/m", quantity = "torque" | "stiffness"
+//
+// All numbers are stored as IEEE float64, so a round trip is bit-exact. Strings are
+// variable-length UTF-8 (h5py reads them as str); fixed-length strings are also accepted.
+// No deal.II here: this is a light module (HDF5 C API only).
+#include "dynamics/mesh_force.h"
+
+#include <filesystem>
+#include <string>
+
+namespace gearfem::io
+{
+  /// Value of the root attribute `format`.
+  inline constexpr const char *mesh_table_format = "gearfem-mesh-table";
+  /// Value of the root attribute `format_version` written (and the only one read).
+  /// Bumped on every incompatible change of the layout (docs/mesh-tables.md).
+  inline constexpr int mesh_table_format_version = 1;
+
+  /// Where a table came from.
+  struct TableProvenance
+  {
+    /// The command or run that made the table, e.g. "gearfem mesh-table pair.prm".
+    std::string source;
+    /// Timestamp, ISO 8601 (UTC); empty: write_mesh_table uses the current time.
+    std::string created;
+  };
+
+  /// What a mesh-table file carries besides the table itself.
+  struct MeshTableFileInfo
+  {
+    TableProvenance provenance;
+    int format_version = 0;
+    double valid_min = 0, valid_max = 0; ///< validity range of the second axis (m or N)
+  };
+
+  /// Write `table` to `file` atomically (temporary name in the same folder, then rename):
+  /// on any failure nothing appears at `file` and an existing file there is untouched.
+  /// The table is checked first (MeshTable::check). The second-axis validity range is
+  /// written as [second.front(), second.back()].
+  /// Throws InputError if the table is invalid or the file cannot be created (e.g. the
+  /// folder does not exist), std::runtime_error for other HDF5 write failures.
+  void write_mesh_table(const std::filesystem::path &file, const dynamics::MeshTable &table,
+                        const TableProvenance &provenance);
+
+  /// Read a mesh table and check it (MeshTable::check, with `expected_hash` if not empty).
+  /// Throws InputError naming the file and the dataset or attribute for: a missing file, a
+  /// file that is not HDF5 or is corrupt, a wrong `format` or `format_version`, missing
+  /// axes or values, wrong units, sizes that do not match, and a geometry-hash mismatch.
+  /// @param info if not null, receives the provenance, version and validity range.
+  dynamics::MeshTable read_mesh_table(const std::filesystem::path &file,
+                                      const std::string &expected_hash = "",
+                                      MeshTableFileInfo *info = nullptr);
+} // namespace gearfem::io
