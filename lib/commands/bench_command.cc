@@ -13,6 +13,10 @@
 #  include "dynamics/benchmark.h"
 #  define GEARFEM_BENCH_DYNAMICS 1
 #endif
+#if __has_include("contact/benchmark.h")
+#  include "contact/benchmark.h"
+#  define GEARFEM_BENCH_SOLVE
+#endif
 #if __has_include("fem/benchmark.h")
 #  include "fem/benchmark.h"
 #  define GEARFEM_BENCH_FEM 1
@@ -24,11 +28,12 @@ namespace gearfem::commands
   {
     Command c;
     c.name        = "bench";
-    c.summary     = "benchmarks that print timings and errors (analytical | dynamics | fem)";
+    c.summary     = "benchmarks that print timings and errors (analytical | dynamics | fem | solve)";
     c.description = "Sample runs:\n"
                     "  gearfem bench analytical\n"
                     "  gearfem bench dynamics\n"
                     "  gearfem bench fem inputs/demo.prm\n"
+                    "  gearfem bench solve inputs/demo.prm\n"
                     "Figures are printed; validation/RESULTS.md records them with the command.";
     c.needs_input = false;
     c.parse_input = false;
@@ -63,6 +68,18 @@ namespace gearfem::commands
                              "usage: gearfem bench fem inputs/demo.prm");
           if (!ctx.validate_only)
             fem::benchmark(ctx.input_file, *ctx.out);
+          return;
+        }
+#endif
+#ifdef GEARFEM_BENCH_SOLVE
+      available += " solve";
+      if (what == "solve")
+        {
+          if (ctx.input_file.empty())
+            throw InputError("bench solve input file", "(none)", "a .prm file",
+                             "usage: gearfem bench solve inputs/demo.prm");
+          if (!ctx.validate_only)
+            contact::benchmark(ctx.input_file, *ctx.out);
           return;
         }
 #endif

@@ -167,7 +167,7 @@ namespace gearfem::commands
           }
       Progress progress(&out, positions.size() * sp.torques.size(), "position");
       std::size_t done = 0;
-      int unresolved   = 0;
+      std::map<double, int> unresolved;
       std::string failure;
       for (const double T : sp.torques)
         {
@@ -190,7 +190,7 @@ namespace gearfem::commands
                 }
               t.add(r, name, int(i), z_ratio);
               for (const auto &p : r.pairs)
-                unresolved += p.share > 0.05 && !p.resolved;
+                unresolved[T] += p.share > 0.05 && !p.resolved;
               if (keep)
                 {
                   std::ostringstream n;
@@ -235,7 +235,7 @@ namespace gearfem::commands
         {}
       out << "\n| T1 [N m] | mean STE [um] | STE p-p [um] | mean k_secant [N/(mm um)] | ISO 6336-1 "
              "c_gamma_alpha [N/(mm um)] | ratio | max p [MPa] | max root stress pinion/gear [MPa] | "
-             "unresolved pairs |\n|---|---|---|---|---|---|---|---|---|\n";
+             "unresolved pairs (of all positions) |\n|---|---|---|---|---|---|---|---|---|\n";
       const auto T_col = t.sweep.column("torque"), ste = t.sweep.column("STE"),
                  k = t.sweep.column("k_secant per width"), p = t.sweep.column("p_max"),
                  sp1 = t.sweep.column("root stress pinion"), sp2 = t.sweep.column("root stress gear");
@@ -254,11 +254,14 @@ namespace gearfem::commands
             continue;
           out << std::setprecision(4) << "| " << T << " | " << sum / n << " | " << hi - lo << " | " << ks / n
               << " | " << c_gamma << " | " << (c_gamma > 0 ? ks / n / c_gamma : 0.0) << " | " << pm << " | "
-              << s1 << " / " << s2 << " | " << unresolved << " |\n";
+              << s1 << " / " << s2 << " | " << unresolved[T] << " |\n";
         }
-      if (unresolved > 0)
-        out << "warning: " << unresolved
-            << " loaded tooth pairs have fewer than 5 contact nodes across the patch: their peak "
+      int n_unresolved = 0;
+      for (const auto &[T, n] : unresolved)
+        n_unresolved += n;
+      if (n_unresolved > 0)
+        out << "warning: " << n_unresolved
+            << " loaded tooth pairs (all torques) have fewer than 5 contact nodes across the patch: their peak "
                "pressure is unresolved (refine Mesh/h_contact); STE, stiffness and root stress are "
                "not affected\n";
     }

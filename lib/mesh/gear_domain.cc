@@ -20,6 +20,8 @@ namespace gearfem::mesh
     if (model == Model::sector && sector_teeth < 1)
       throw InputError("Mesh/Sector teeth", std::to_string(sector_teeth), ">= 1");
     require_greater("Mesh/h_contact", h_contact * 1e3, 0.0, "mm");
+    if (!(h_coast >= 0) || h_coast > h_body)
+      throw InputError("Mesh/h_coast", to_string_g(h_coast * 1e3) + " mm", "[0, h_body] (0: h_contact)");
     require_greater("Mesh/h_fillet", h_fillet * 1e3, 0.0, "mm");
     require_greater("Mesh/h_body", h_body * 1e3, 0.0, "mm");
     if (h_contact > h_body)
@@ -174,7 +176,11 @@ namespace gearfem::mesh
             const bool flank_like = sg.type == geometry::SegmentType::flank ||
                                     sg.type == geometry::SegmentType::tip ||
                                     sg.type == geometry::SegmentType::tip_rounding;
-            piece.size = !is_fine ? h_coarse : (flank_like ? p.h_contact : p.h_fillet);
+            const bool coast = sg.side == geometry::Side::coast &&
+                               (sg.type == geometry::SegmentType::flank ||
+                                sg.type == geometry::SegmentType::tip_rounding);
+            const double h_flank = coast && p.h_coast > 0 ? p.h_coast : p.h_contact;
+            piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
             // Split fine flanks at the requested radii (bisection on the radius).
             std::vector<double> cuts;
             if (is_fine && sg.type == geometry::SegmentType::flank)

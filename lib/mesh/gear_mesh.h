@@ -23,6 +23,7 @@ namespace gearfem::mesh
     int sector_teeth        = 3;       ///< N (sector only), >= 1
     double h_contact        = 0.25e-3; ///< element size on the flanks of the fine teeth [m]
     double h_fillet         = 0.25e-3; ///< element size on the fillets and root of the fine teeth [m]
+    double h_coast          = 0;       ///< size on the coast flank and coast tip rounding of the fine teeth [m]; 0: h_contact
     double h_body           = 3e-3;    ///< largest element size inside [m]
     double h_tooth          = 0;       ///< size on the other teeth [m]; 0: min(h_body, 0.4 m)
     double growth           = 1.2;     ///< size growth ratio away from fine boundaries (> 1)

@@ -23,6 +23,10 @@ namespace gearfem::mesh
     prm.declare_entry("h_contact", "0.25", Double(),
                       "Element size on the flanks (and tip) of the fine teeth. Units: mm. "
                       "Allowed: > 0 and <= h_body.");
+    prm.declare_entry("h_coast", "0", Double(),
+                      "Element size on the coast flanks (and coast tip rounding) of the fine "
+                      "teeth; 0: h_contact. A static drive-side analysis can use h_fillet here "
+                      "and refine only the loaded flanks. Units: mm. Allowed: >= 0, <= h_body.");
     prm.declare_entry("h_fillet", "0.25", Double(),
                       "Element size on the fillets and root of the fine teeth. Units: mm. "
                       "Allowed: > 0 and <= h_body.");
@@ -66,6 +70,7 @@ namespace gearfem::mesh
     p.sector_teeth   = prm.get_integer("Sector teeth");
     p.h_contact      = prm.get_double("h_contact") * units::mm;
     p.h_fillet       = prm.get_double("h_fillet") * units::mm;
+    p.h_coast        = prm.get_double("h_coast") * units::mm;
     p.h_body         = prm.get_double("h_body") * units::mm;
     p.h_tooth        = prm.get_double("h_tooth") * units::mm;
     p.growth         = prm.get_double("Growth ratio");

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CLI regression checks for gearfem (see CMakeLists.txt beside this file).
-#   cli_checks.sh bad      GEARFEM FILE.prm   exit 2, the parameter named on line 3
+#   cli_checks.sh bad      GEARFEM FILE.prm   `gearfem <command of line 1>` exits 2, the parameter named on line 3
 #                                             ("# expect: ...") in stderr, no output left
 #   cli_checks.sh demo     GEARFEM SRC_DIR    profile run of inputs/demo.prm
 #   cli_checks.sh validate GEARFEM SRC_DIR    every inputs/*.prm passes --validate
@@ -20,7 +20,8 @@ case $mode in
   bad)
     expect=$(sed -n 's/^# expect: //p' "$arg")
     [ -n "$expect" ] || fail "$arg has no '# expect:' line"
-    "$gearfem" profile "$arg" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+    cmd=$(sed -n '1s/^# gearfem \([a-z]*\).*/\1/p' "$arg")
+    "$gearfem" "$cmd" "$arg" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
     rc=$?
     cat "$work/stderr"
     [ $rc -eq 2 ] || fail "exit status $rc (expected 2) for $arg"
@@ -28,8 +29,21 @@ case $mode in
     grep -qi "internal error\|terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
     [ ! -e "$work/out" ] || [ -z "$(ls -A "$work/out")" ] || fail "output left behind: $(ls "$work/out")"
     # --validate gives the same answer and writes nothing either.
-    "$gearfem" profile --validate "$arg" > /dev/null 2>&1
+    "$gearfem" "$cmd" --validate "$arg" > /dev/null 2>&1
     [ $? -eq 2 ] || fail "--validate did not exit 2 for $arg"
+    ;;
+  nocontact)
+    # No flank node within the contact search distance (inputs/bad/solve/no_contact.prm).
+    # `solve` must stop with a solver error (exit 3) that says no contact was found and
+    # names the position and the torque, leaving complete files only.
+    "$gearfem" solve "$arg/inputs/bad/solve/no_contact.prm" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 3 ] || fail "exit status $rc (expected 3)"
+    grep -q "no contact found" "$work/stderr" || fail "message does not say 'no contact found'"
+    grep -q "position phi1" "$work/stderr" || fail "message does not name the position"
+    grep -qi "terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
+    ls -A "$work/out" | grep -q tmp && fail "temporary file left behind"
     ;;
   demo)
     "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||

@@ -169,3 +169,21 @@ TEST(GearContact, BadInput)
   EXPECT_THROW(o.validate(), InputError);
   EXPECT_THROW(cycle_positions(*setup().pair, 0, 1, 0), InputError);
 }
+
+TEST(GearContact, PositionsExactlyAtAAndE)
+{
+  // A tooth entering (A) and leaving (E) contact: the solve converges, the entering or
+  // leaving pair carries at most a small share (it touches at the tip corner), and the
+  // contact forces balance T1.
+  for (const char *n : {"A", "E"})
+    {
+      const auto r = lagrange().solve(setup().pair->point(n).roll_angle, 200.0);
+      ASSERT_TRUE(r.solution.converged) << n;
+      EXPECT_NEAR(r.torque_contact / 200.0, 1.0, 1e-9) << n;
+      EXPECT_GE(r.n_pairs, 1) << n;
+      double smallest = 1;
+      for (const auto &p : r.pairs)
+        smallest = std::min(smallest, p.share);
+      EXPECT_LT(smallest, 0.5) << n;
+    }
+}
