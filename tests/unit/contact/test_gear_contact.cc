@@ -187,3 +187,28 @@ TEST(GearContact, PositionsExactlyAtAAndE)
       EXPECT_LT(smallest, 0.5) << n;
     }
 }
+
+TEST(GearContact, NonConvergenceCutsTheLoadThenNamesTheHistory)
+{
+  // One active-set iteration per solve cannot settle a two-pair position from a cold start:
+  // the solver must cut the load, and when that is not enough, fail with a SolverError
+  // that names the position, the torque and the residual history (never a NaN result).
+  ContactOptions o;
+  o.max_active_set_iterations = 1;
+  o.max_load_cuts             = 2;
+  auto m = setup().model(o);
+  try
+    {
+      (void)m->solve(setup().pair->point("A").roll_angle + 0.01, 200.0);
+      FAIL() << "expected a SolverError";
+    }
+  catch (const SolverError &e)
+    {
+      const std::string msg = e.what();
+      std::cout << msg.substr(0, 400) << "\n";
+      EXPECT_NE(msg.find("position phi1"), std::string::npos);
+      EXPECT_NE(msg.find("torque 200"), std::string::npos);
+      EXPECT_NE(msg.find("load cut"), std::string::npos);
+      EXPECT_NE(msg.find("residual history"), std::string::npos);
+    }
+}
