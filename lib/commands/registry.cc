@@ -9,6 +9,7 @@ namespace gearfem::commands
   Command mesh_command();
   Command bench_command();
   Command solve_command();
+  Command calibrate_command();
 
   const std::vector<Command> &registry()
   {
@@ -18,6 +19,7 @@ namespace gearfem::commands
       rate_command(),
       mesh_command(),
       solve_command(),
+      calibrate_command(),
       bench_command(),
     };
     return commands;

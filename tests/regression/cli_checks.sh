@@ -45,6 +45,26 @@ case $mode in
     grep -qi "terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
     ls -A "$work/out" | grep -q tmp && fail "temporary file left behind"
     ;;
+  calibrate)
+    # gearfem calibrate refuses results of another geometry and unreadable files (exit 2,
+    # naming Calibration/Results files), and writes no output then.
+    "$gearfem" solve "$arg/inputs/bad/solve/one_position.prm" --output-dir "$work/fe" > /dev/null 2>&1 ||
+      fail "coarse solve for the calibrate check failed"
+    sed -e "s|@RESULTS@|$work/fe/results.h5|" "$arg/inputs/bad/calibrate/other_geometry.prm" > "$work/other.prm"
+    "$gearfem" calibrate "$work/other.prm" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+    rc=$?; cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "hash mismatch: exit status $rc (expected 2)"
+    grep -q "Calibration/Results files" "$work/stderr" || fail "hash mismatch message does not name the entry"
+    grep -q "another pair" "$work/stderr" || fail "hash mismatch message does not say why"
+    echo "not an HDF5 file" > "$work/corrupt.h5"
+    sed -e "s|@RESULTS@|$work/corrupt.h5|" "$arg/inputs/bad/calibrate/other_geometry.prm" > "$work/corrupt.prm"
+    "$gearfem" calibrate "$work/corrupt.prm" --output-dir "$work/out2" > "$work/stdout" 2> "$work/stderr"
+    rc=$?; cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "corrupt file: exit status $rc (expected 2)"
+    grep -q "Calibration/Results files" "$work/stderr" || fail "corrupt-file message does not name the entry"
+    grep -qi "terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
+    [ ! -e "$work/out2" ] || [ -z "$(ls -A "$work/out2")" ] || fail "output left behind: $(ls "$work/out2")"
+    ;;
   demo)
     "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
       { cat "$work/stdout"; fail "demo run failed"; }

@@ -1,0 +1,88 @@
+#pragma once
+// Calibration of an analytical mesh model against FE static transmission error (issue 5,
+// section 4). The model: the tooth-pair compliance of PairCompliance split into its beam,
+// foundation and Hertz parts, each with a multiplier; a body compliance in series with the
+// whole mesh (rim, web and hub deformation that the tooth models leave out); and extended
+// contact outside the geometric path A..E: a pair a distance d beyond A or E starts with the
+// rigid separation d^2 / (2 R_e) along the line of action and carries load once the mesh
+// deflection exceeds it (the FE shows this as the narrowing of the single-pair zone under
+// load). Load sharing by equal deflection with the Hertz nonlinearity iterated on the
+// pair loads. Light layer (Eigen only). SI units.
+#include "analytical/tooth.h"
+
+#include <string>
+#include <vector>
+
+namespace gearfem::analytical
+{
+  /// One FE result: STE [m] at pinion roll angle [rad] under pinion torque [N m].
+  struct SteSample
+  {
+    double torque = 0, roll_angle = 0, ste = 0;
+  };
+
+  /// The physically meaningful correction factors.
+  struct CalibrationFactors
+  {
+    double beam = 1;        ///< multiplier on the beam (bending + shear + axial) compliance
+    double foundation = 1;  ///< multiplier on the fillet-foundation compliance
+    double hertz = 1;       ///< multiplier on the Hertz compliance
+    double body = 0;        ///< series body compliance [m/N] (of the normal load)
+    double extended = 0;    ///< R_e [m]; 0: no extended contact
+  };
+
+  /// The calibrated mesh model.
+  class CalibratedMesh
+  {
+  public:
+    CalibratedMesh(const PairCompliance &pairs, const CalibrationFactors &f);
+    /// Loaded STE [m] at roll angle phi1 [rad] and normal load F [N] (> 0); also the pair
+    /// loads and the number of pairs carrying load when asked.
+    double ste(double phi1, double F, std::vector<double> *pair_loads = nullptr) const;
+    /// Secant mesh stiffness F / STE [N/m].
+    double stiffness(double phi1, double F) const { return F / ste(phi1, F); }
+    /// Normal load [N] at mesh compression delta [m] (the inverse of ste(); 0 for delta <= 0).
+    double load_at(double phi1, double delta) const;
+    const CalibrationFactors &factors() const { return f_; }
+    double base_radius() const { return pairs_.line().rb1; }
+
+  private:
+    PairCompliance pairs_;
+    CalibrationFactors f_;
+  };
+
+  /// Which factors the fit may change.
+  struct FitMask
+  {
+    bool beam = true, foundation = true, hertz = true, body = true, extended = true;
+  };
+
+  /// Error statistics of a model against samples [relative].
+  struct SteErrors
+  {
+    double torque = 0;
+    double mean_abs = 0, max_abs = 0;
+  };
+
+  struct FitResult
+  {
+    CalibrationFactors factors;
+    std::vector<std::string> names;        ///< fitted factors
+    std::vector<double> values, std_error; ///< value and 1-sigma standard error of each
+    std::vector<std::string> warnings;     ///< ill-conditioning, unidentifiable factors
+    double condition = 0;                  ///< condition number of J^T J (scaled parameters)
+    int iterations = 0;
+    double rms = 0;                        ///< RMS relative STE error at the optimum
+  };
+
+  /// Relative STE errors per torque of `f` against `samples`.
+  std::vector<SteErrors> ste_errors(const PairCompliance &pairs, const CalibrationFactors &f,
+                                    const std::vector<SteSample> &samples);
+
+  /// Levenberg-Marquardt fit of the masked factors minimising the relative STE error over
+  /// all samples (multipliers in log space, so they stay positive; body and R_e >= 0).
+  /// Standard errors from sigma^2 (J^T J)^-1; factors whose correlation exceeds 0.98 or
+  /// whose relative standard error exceeds 50 % are reported as not identifiable.
+  FitResult fit_factors(const PairCompliance &pairs, const std::vector<SteSample> &samples,
+                        const CalibrationFactors &start, const FitMask &mask = {});
+} // namespace gearfem::analytical
