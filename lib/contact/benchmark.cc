@@ -2,27 +2,17 @@
 #include "contact/benchmark.h"
 
 #include "base/errors.h"
+#include "base/memory.h"
 #include "contact/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <sys/resource.h>
 
 #include <chrono>
 #include <iomanip>
 
 namespace gearfem::contact
 {
-  namespace
-  {
-    double peak_memory_mb()
-    {
-      rusage u{};
-      getrusage(RUSAGE_SELF, &u);
-      return u.ru_maxrss / 1024.0; // kB on Linux
-    }
-  } // namespace
-
   void benchmark(const std::filesystem::path &prm_file, std::ostream &out)
   {
     if (!std::filesystem::is_regular_file(prm_file))

@@ -2,6 +2,7 @@
 #include "fem/benchmark.h"
 
 #include "base/errors.h"
+#include "base/memory.h"
 #include "fem/parameters.h"
 #include "fem/tooth_load.h"
 #include "geometry/parameters.h"
@@ -9,23 +10,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <sys/resource.h>
 
 #include <cmath>
 #include <iomanip>
 
 namespace gearfem::fem
 {
-  namespace
-  {
-    double peak_memory_mb()
-    {
-      rusage u{};
-      getrusage(RUSAGE_SELF, &u);
-      return u.ru_maxrss / 1024.0; // kB on Linux
-    }
-  } // namespace
-
   void benchmark(const std::filesystem::path &prm_file, std::ostream &out)
   {
     dealii::ParameterHandler prm;

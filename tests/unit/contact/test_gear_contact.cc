@@ -4,9 +4,6 @@
 #include "base/errors.h"
 #include "contact/gear_contact.h"
 #include "contact/parameters.h"
-#include "fem/parameters.h"
-#include "geometry/parameters.h"
-#include "mesh/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -44,36 +41,21 @@ subsection Mesh
 end
 )";
 
+  /// The coarse demo pair through the same parsing as `gearfem solve`.
   struct Setup
   {
-    dealii::ParameterHandler prm;
-    std::unique_ptr<geometry::GearPair> pair;
-    mesh::GearMeshParameters mp[2];
-    fem::Elasticity mat[2];
-    fem::FeOptions fe;
-    explicit Setup(const std::string &extra = "")
+    GearContactInput in;
+    std::unique_ptr<geometry::GearPair> &pair = in.pair;
+    Setup()
     {
-      geometry::declare_geometry_parameters(prm);
-      geometry::declare_material_parameters(prm);
-      mesh::declare_mesh_parameters(prm);
-      fem::declare_fe_parameters(prm);
-      declare_contact_parameters(prm);
-      declare_solve_parameters(prm);
-      prm.parse_input_from_string(std::string(demo_prm) + extra);
-      const auto gi = geometry::parse_geometry_parameters(prm);
-      const auto pm = geometry::parse_material_parameters(prm);
-      pair          = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
-      for (int i = 0; i < 2; ++i)
-        {
-          mp[i]  = mesh::parse_mesh_parameters(prm, i + 1);
-          mat[i] = fem::elasticity(i == 0 ? pm.gear1 : pm.gear2, pair->gear(i + 1).parameters().face_width,
-                                   pm.plane_strain);
-        }
-      fe = fem::parse_fe_parameters(prm);
+      dealii::ParameterHandler prm;
+      declare_gear_contact_input(prm);
+      prm.parse_input_from_string(demo_prm);
+      in = parse_gear_contact_input(prm);
     }
     std::unique_ptr<GearContactModel> model(const ContactOptions &o) const
     {
-      return std::make_unique<GearContactModel>(*pair, mp, mat, fe, o);
+      return std::make_unique<GearContactModel>(*in.pair, in.mesh, in.material, in.fe, o);
     }
   };
 
