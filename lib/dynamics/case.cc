@@ -48,9 +48,15 @@ namespace gearfem::dynamics
     if (!(ks_zeta >= 0))
       throw InputError("Dynamics/Kahraman-Singh/Damping ratio", to_string_g(ks_zeta), ">= 0");
     if (run_sweep && !(sweep_min < sweep_max))
-      throw InputError("Dynamics/Analysis/Sweep minimum speed",
-                       to_string_g(sweep_min) + " (maximum " + to_string_g(sweep_max) + ")",
-                       "< Sweep maximum speed");
+      {
+        // Report in the units of the input: rpm, or Omega [-] in the Kahraman-Singh mode.
+        const bool ks = model == ModelKind::kahraman_singh;
+        const double f = ks ? 1.0 : 30.0 / M_PI;
+        const std::string u = ks ? "" : " rpm";
+        throw InputError("Dynamics/Analysis/Sweep minimum speed",
+                         to_string_g(sweep_min * f) + u + " (maximum " + to_string_g(sweep_max * f) + u + ")",
+                         "< Sweep maximum speed");
+      }
     if (run_sweep)
       require_greater("Dynamics/Analysis/Number of speeds", sweep_points, 1.0);
     require_greater("Dynamics/Analysis/Threads", threads, 0.0);

@@ -25,6 +25,15 @@ namespace gearfem::dynamics
     external ///< a law built outside this module (e.g. the analytical torque table)
   };
 
+  /// Where a LawKind::external law comes from (built by the caller, e.g. the CLI command,
+  /// because these laws need the geometry, analytical or HDF5 modules).
+  enum class ExternalSource
+  {
+    analytical_table, ///< seed 000 torque table of the Weber/Cornell model
+    table_file,       ///< HDF5 mesh table (docs/mesh-tables.md)
+    ricker            ///< seed 000 semi-analytical law with Ricker load sharing
+  };
+
   struct DynamicsCase
   {
     ModelKind model = ModelKind::torsional;
@@ -48,6 +57,11 @@ namespace gearfem::dynamics
     /// LawKind::external: the law to use (cloned); its backlash comes from `backlash`
     /// (>= 0) or from the standard pair.
     std::shared_ptr<const MeshForceLaw> external_law;
+    ExternalSource external_source = ExternalSource::analytical_table;
+    std::string table_file; ///< table_file: resolved path of the HDF5 mesh table
+    std::string table_hash; ///< table_file: expected geometry hash; empty: not checked
+    double ricker_widening = 2.0 * 3.14159265358979323846 / 180.0 / 1e-3; ///< c_x [rad/m]
+    bool ricker_centred = false; ///< SecondPair::centred instead of the thesis' eq. 3.45
     // Operating point.
     double input_torque = 100, output_torque = -1; ///< [N m]
     double speed = 160;                            ///< pinion speed [rad/s]

@@ -65,12 +65,14 @@ namespace gearfem::dynamics
 
     prm.enter_subsection("Mesh force");
     prm.declare_entry("Law", "piecewise constant",
-                      Selection("piecewise constant|Fourier|STE|analytical table"),
+                      Selection("piecewise constant|Fourier|STE|analytical table|table file|Ricker"),
                       "piecewise constant: k_single / k_double zones from the contact ratio; "
                       "Fourier: kbar (1 + sum a_n cos(n z1 theta) + b_n sin); STE: kbar (delta - "
                       "e(theta)); analytical table: seed 000 torque table T(theta, delta) of the "
-                      "Weber/Cornell model (lib/analytical) on the generated pair. (Tables from "
-                      "the calibration HDF5 files: not yet wired.)");
+                      "Weber/Cornell model (lib/analytical) on the generated pair; table file: an "
+                      "HDF5 mesh table T(theta, delta) or k(theta, F) (docs/mesh-tables.md, e.g. "
+                      "mesh_torque.h5 of gearfem calibrate); Ricker: seed 000 semi-analytical "
+                      "pair stiffness with Ricker-wavelet load sharing (eqs. 3.18-3.46).");
     prm.declare_entry("Theta interpolation", "linear", Selection("linear|monotone cubic"),
                       "Table laws: bilinear, or monotone cubic (Fritsch-Carlson) in theta [-].");
     prm.declare_entry("Single-pair stiffness", "14", Double(0),
@@ -84,6 +86,18 @@ namespace gearfem::dynamics
                       "Back contact at theta_r = thickness angle - theta (seed 000 4.11) [-].");
     prm.declare_entry("STE file", "", dealii::Patterns::Anything(),
                       "CSV with header; columns: mesh position [deg], STE [um] over one mesh period.");
+    prm.declare_entry("Table file", "", dealii::Patterns::Anything(),
+                      "Law = table file: HDF5 mesh table (relative paths from the input file's "
+                      "folder). Its period must be 2 pi/z1 and its base radius r_b1 of this pair.");
+    prm.declare_entry("Table geometry hash", "", dealii::Patterns::Anything(),
+                      "Law = table file: the geometry hash the table must carry (the FE run's "
+                      "geometry fingerprint); empty: not checked (the hash is printed).");
+    prm.declare_entry("Ricker widening", "2", Double(0),
+                      "Law = Ricker: c_x, widening of the double-contact zone with the "
+                      "compression (seed 000 eq. 3.42, thesis: about 2). Units: deg/mm.");
+    prm.declare_entry("Ricker second pair", "thesis", Selection("thesis|centred"),
+                      "Law = Ricker: neighbour pair of eq. 3.36 switched at the pitch point "
+                      "(eq. 3.45 as printed) or at the centre of AB (continuous force) [-].");
     prm.leave_subsection();
 
     prm.enter_subsection("Operating");
@@ -169,7 +183,12 @@ namespace gearfem::dynamics
     const std::string law = prm.get("Law");
     c.law = law == "Fourier" ? LawKind::fourier :
             law == "STE"     ? LawKind::ste :
-            law == "analytical table" ? LawKind::external : LawKind::piecewise_constant;
+            (law == "analytical table" || law == "table file" || law == "Ricker") ?
+                               LawKind::external :
+                               LawKind::piecewise_constant;
+    c.external_source = law == "table file" ? ExternalSource::table_file :
+                        law == "Ricker"     ? ExternalSource::ricker :
+                                              ExternalSource::analytical_table;
     c.theta_interpolation = prm.get("Theta interpolation") == "linear" ?
                               ThetaInterpolation::linear :
                               ThetaInterpolation::monotone_cubic;
@@ -195,6 +214,21 @@ namespace gearfem::dynamics
             c.ste_values.push_back(row[1] * um);
           }
       }
+    const std::string table = prm.get("Table file");
+    c.table_hash = prm.get("Table geometry hash");
+    if (c.law == LawKind::external && c.external_source == ExternalSource::table_file)
+      {
+        std::filesystem::path f(table);
+        if (f.is_relative() && !input_dir.empty())
+          f = std::filesystem::path(input_dir) / f;
+        if (table.empty() || !std::filesystem::is_regular_file(f))
+          throw InputError("Dynamics/Mesh force/Table file", table.empty() ? "(empty)" : f.string(),
+                           "an existing HDF5 mesh-table file (docs/mesh-tables.md; gearfem "
+                           "calibrate writes mesh_torque.h5 and mesh_stiffness.h5)");
+        c.table_file = f.string();
+      }
+    c.ricker_widening = prm.get_double("Ricker widening") * deg / mm;
+    c.ricker_centred = prm.get("Ricker second pair") == "centred";
     prm.leave_subsection();
 
     prm.enter_subsection("Operating");

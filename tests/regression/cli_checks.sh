@@ -5,6 +5,7 @@
 #   cli_checks.sh demo     GEARFEM SRC_DIR    profile run of inputs/demo.prm
 #   cli_checks.sh validate GEARFEM SRC_DIR    every inputs/*.prm passes --validate
 #   cli_checks.sh basics   GEARFEM SRC_DIR    --help, --version, unknown command, missing file
+#   cli_checks.sh tablefile GEARFEM SRC_DIR   dynamics with HDF5 mesh tables written by h5py
 set -uo pipefail
 mode=$1 gearfem=$2 arg=$3
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -64,6 +65,57 @@ case $mode in
     grep -q "Calibration/Results files" "$work/stderr" || fail "corrupt-file message does not name the entry"
     grep -qi "terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
     [ ! -e "$work/out2" ] || [ -z "$(ls -A "$work/out2")" ] || fail "output left behind: $(ls "$work/out2")"
+    ;;
+  tablefile)
+    # `gearfem dynamics` with Law = table file, on tables written independently of lib/io by
+    # write_mesh_table.py (h5py, docs/mesh-tables.md). Closed forms (quasi-static response,
+    # mesh frequency 50 Hz against f_n ~ 4 kHz, so the dynamic part is ~(50/4000)^2):
+    #   constant k0 = 5e8 N/m: mean DTE = T/(r_b1 k0), peak-to-peak ~ 0;
+    #   k0 (1 + 0.1 cos 50 theta): peak-to-peak DTE = T/(r_b1 k0) (1/0.9 - 1/1.1).
+    # Then every bad table is refused with exit 2, naming Dynamics/Mesh force/Table file.
+    src=$arg/tests/regression
+    /usr/bin/python3 -c 'import h5py' 2> /dev/null || { echo "skipped: no h5py"; exit 0; }
+    for v in constant ripple bad_unit no_delta hash; do
+      /usr/bin/python3 "$src/write_mesh_table.py" "$work/$v.h5" $v || fail "writing the $v table"
+    done
+    # case NAME TABLE HASH Z1 TORQUE: the input file $work/NAME.prm
+    case_file() {
+      sed -e "s|@TABLE@|$work/$2.h5|" -e "s|@HASH@|$3|" -e "s|@Z1@|$4|" -e "s|@TORQUE@|$5|" \
+        "$src/data/table_file.prm" > "$work/$1.prm"
+    }
+    # mean and peak-to-peak of the DTE column [um] of response.csv
+    stats() { awk -F, 'NR > 1 { s += $3; n++; if (n == 1 || $3 < lo) lo = $3; if (n == 1 || $3 > hi) hi = $3 }
+                       END { printf "%.12g %.12g\n", s / n, hi - lo }' "$1/response.csv"; }
+    static=$(awk 'BEGIN { printf "%.12g", 200 / (75e-3 * cos(20 * atan2(1, 1) / 45) * 5e8) * 1e6 }')
+    case_file constant constant "" 50 200
+    "$gearfem" dynamics "$work/constant.prm" --output-dir "$work/c" > "$work/log" 2>&1 || { cat "$work/log"; fail "constant table run"; }
+    read -r mean ptp <<< "$(stats "$work/c")"
+    echo "constant table: mean DTE $mean um (closed form $static), peak-to-peak $ptp um"
+    near "$mean" "$static" "$(awk -v s="$static" 'BEGIN { print 1e-6 * s }')" || fail "mean DTE $mean vs $static"
+    near "$ptp" 0 "$(awk -v s="$static" 'BEGIN { print 1e-6 * s }')" || fail "peak-to-peak $ptp vs 0"
+    case_file ripple ripple "" 50 200
+    "$gearfem" dynamics "$work/ripple.prm" --output-dir "$work/r" > "$work/log" 2>&1 || { cat "$work/log"; fail "ripple table run"; }
+    read -r mean ptp <<< "$(stats "$work/r")"
+    expect=$(awk -v s="$static" 'BEGIN { printf "%.12g", s * (1 / 0.9 - 1 / 1.1) }')
+    echo "ripple table: peak-to-peak DTE $ptp um (quasi-static closed form $expect)"
+    near "$ptp" "$expect" "$(awk -v s="$expect" 'BEGIN { print 0.01 * s }')" || fail "peak-to-peak $ptp vs $expect"
+    # refused: name.prm table hash z1 torque, and the words the message must contain
+    check_refused() {
+      case_file "$1" "$2" "$3" "$4" "$5"
+      "$gearfem" dynamics "$work/$1.prm" --output-dir "$work/out_$1" > "$work/stdout" 2> "$work/stderr"
+      rc=$?; cat "$work/stderr"
+      [ $rc -eq 2 ] || fail "$1: exit status $rc (expected 2)"
+      grep -q "Dynamics/Mesh force/Table file" "$work/stderr" || fail "$1: message does not name the entry"
+      grep -q "$6" "$work/stderr" || fail "$1: message does not say '$6'"
+      grep -qi "terminate\|Traceback\|internal error" "$work/stderr" && fail "$1: crash text"
+      [ ! -e "$work/out_$1" ] || [ -z "$(ls -A "$work/out_$1")" ] || fail "$1: output left behind"
+    }
+    check_refused unit bad_unit "" 50 200 "unit"
+    check_refused axis no_delta "" 50 200 "delta"
+    check_refused hash hash "fedcba9876543210" 50 200 "hash"
+    check_refused teeth constant "" 40 200 "another number of teeth"
+    check_refused load constant "" 50 20000 "does not cover"
+    check_refused missing nosuchfile "" 50 200 "an existing HDF5"
     ;;
   demo)
     "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||

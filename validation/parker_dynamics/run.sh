@@ -1,14 +1,26 @@
 #!/usr/bin/env bash
-# Parker pair up/down RMS-DTE sweeps at 100/200/340 N m (interim analytical table), then
-# analyse.py: resonance, jump frequencies, contact loss, linear natural frequency; plot.
+# Parker pair up/down RMS-DTE sweeps at 100/200/340 N m with (1) the FE-calibrated torque
+# table (gearfem calibrate on the validation/parker_ste FE sweeps, calibrate_tables.prm) and
+# (2) the analytical Weber/Cornell torque table; analyse.py reports the resonance, jump
+# frequencies and contact loss and plots parker_sweeps.png / parker_sweeps_analytical.png.
+# Needs validation/parker_ste/results/plane_stress/results.h5 (validation/parker_ste/run.sh).
 # Usage: validation/parker_dynamics/run.sh   (GEARFEM=path/to/gearfem to override)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 gearfem="${GEARFEM:-$root/build/app/gearfem}"
-out="${OUT:-$here/results}"
+out="$here/results" # the sweep inputs name results/tables/mesh_torque.h5
+[ -f "$here/../parker_ste/results/plane_stress/results.h5" ] ||
+  { echo "run validation/parker_ste/run.sh first (FE sweeps)" >&2; exit 1; }
+"$gearfem" calibrate "$here/calibrate_tables.prm" --output-dir "$out/tables" | grep -E "^tables|held out" || true
 for T in 100 200 340; do
-  /usr/bin/time -f "${T} N m: wall %e s" "$gearfem" dynamics "$here/sweep_${T}Nm.prm" \
-    --output-dir "$out/${T}Nm" | grep -E "natural frequency|warning" | sed "s/^/${T} N m: /"
+  for kind in fe analytical; do
+    prm="$here/sweep_${T}Nm.prm"; [ $kind = fe ] && prm="$here/sweep_fe_${T}Nm.prm"
+    /usr/bin/time -f "${kind} ${T} N m: wall %e s" "$gearfem" dynamics "$prm" \
+      --output-dir "$out/${kind}_${T}Nm" | grep -E "natural frequency|warning" | sed "s/^/${kind} ${T} N m: /"
+  done
 done
-/usr/bin/python3 "$here/analyse.py" "$here/parker_sweeps.png" "$out/100Nm" "$out/200Nm" "$out/340Nm"
+/usr/bin/python3 "$here/analyse.py" "$here/parker_sweeps.png" \
+  "Parker pair 50/50 m3 b20, zeta 0.02, FE-calibrated table" "$out"/fe_{100,200,340}Nm
+/usr/bin/python3 "$here/analyse.py" "$here/parker_sweeps_analytical.png" \
+  "Parker pair 50/50 m3 b20, zeta 0.02, analytical Weber/Cornell table" "$out"/analytical_{100,200,340}Nm
