@@ -113,7 +113,8 @@ namespace gearfem::dynamics
           law = std::make_unique<FourierStiffnessLaw>(kmean_iso, c.z1, c.fourier_cos, c.fourier_sin);
           break;
         case LawKind::ste:
-          law = std::make_unique<SteExcitationLaw>(kmean_iso, c.ste_theta, c.ste_values,
+          law = std::make_unique<SteExcitationLaw>(c.ste_stiffness > 0 ? c.ste_stiffness : kmean_iso,
+                                                   c.ste_theta, c.ste_values,
                                                    2 * M_PI / c.z1);
           break;
         case LawKind::external:

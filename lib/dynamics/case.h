@@ -52,6 +52,7 @@ namespace gearfem::dynamics
     std::vector<double> fourier_cos = {-0.1}, fourier_sin;
     bool reverse_mapping = true;
     std::vector<double> ste_theta, ste_values; ///< [rad], [m] (STE excitation law)
+    double ste_stiffness = 0; ///< kbar of the STE law [N/m]; 0: ISO c_gamma_alpha b
     ThetaInterpolation theta_interpolation = ThetaInterpolation::linear; ///< table laws
     double youngs_modulus = 206e9, poisson_ratio = 0.3; ///< [Pa], [-] (analytical tables)
     /// LawKind::external: the law to use (cloned); its backlash comes from `backlash`

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace gearfem::dynamics
@@ -26,6 +27,52 @@ namespace gearfem::dynamics
         if (!x.empty())
           v.push_back(dealii::Utilities::string_to_double(x));
       return v;
+    }
+
+    /// The STE curve of the STE law from a CSV file: either two columns (position [deg],
+    /// STE [um]) or the sweep.csv of `gearfem solve`, whose rows at the case's input torque
+    /// give STE(theta) and, from F_n / STE, the mean mesh stiffness kbar.
+    void read_ste(DynamicsCase &c, const std::string &file, const std::vector<std::vector<double>> &rows,
+                  const std::vector<std::string> &headers)
+    {
+      using namespace gearfem::units;
+      const std::string entry = "Dynamics/Mesh force/STE file";
+      auto column = [&](const std::string &h) {
+        const auto it = std::find(headers.begin(), headers.end(), h);
+        return it == headers.end() ? -1 : int(it - headers.begin());
+      };
+      const int ct = column("torque [N m]"), ca = column("roll angle [deg]"), cs = column("STE [um]"),
+                cf = column("F_n [N]");
+      const bool fe = ct >= 0 && ca >= 0 && cs >= 0 && cf >= 0;
+      std::string torques;
+      double F = 0, d = 0;
+      for (const auto &row : rows)
+        {
+          if (!fe)
+            {
+              if (row.size() < 2)
+                throw InputError(entry, file, ">= 2 columns: position [deg], STE [um]");
+              c.ste_theta.push_back(row[0] * deg);
+              c.ste_values.push_back(row[1] * um);
+              continue;
+            }
+          if (row.size() != headers.size())
+            throw InputError(entry, file, std::to_string(headers.size()) + " columns in every row");
+          if (std::abs(row[ct] - c.input_torque) > 1e-9 * std::max(1.0, c.input_torque))
+            {
+              if (torques.find(to_string_g(row[ct]) + " ") == std::string::npos)
+                torques += to_string_g(row[ct]) + " ";
+              continue;
+            }
+          c.ste_theta.push_back(row[ca] * deg);
+          c.ste_values.push_back(row[cs] * um);
+          F += row[cf], d += row[cs] * um;
+        }
+      if (fe && c.ste_theta.size() < 2)
+        throw InputError(entry, file, "a sweep at Dynamics/Operating/Input torque = " + to_string_g(c.input_torque) +
+                                        " N m (the file has torques " + (torques.empty() ? "none" : torques) + "N m)");
+      if (fe)
+        c.ste_stiffness = F / d; // mean F_n over mean STE: the FE mean mesh stiffness [N/m]
     }
   } // namespace
 
@@ -85,7 +132,9 @@ namespace gearfem::dynamics
     prm.declare_entry("Reverse-flank mapping", "true", Bool(),
                       "Back contact at theta_r = thickness angle - theta (seed 000 4.11) [-].");
     prm.declare_entry("STE file", "", dealii::Patterns::Anything(),
-                      "CSV with header; columns: mesh position [deg], STE [um] over one mesh period.");
+                      "Law = STE: CSV with a header line, either two columns (mesh position [deg], "
+                      "STE [um] over one mesh period) or the sweep.csv of gearfem solve (its rows at "
+                      "the Input torque; kbar = mean F_n / mean STE of those rows).");
     prm.declare_entry("Table file", "", dealii::Patterns::Anything(),
                       "Law = table file: HDF5 mesh table (relative paths from the input file's "
                       "folder). Its period must be 2 pi/z1 and its base radius r_b1 of this pair.");
@@ -198,20 +247,24 @@ namespace gearfem::dynamics
     c.fourier_sin = doubles(prm.get("Fourier sine coefficients"));
     c.reverse_mapping = prm.get_bool("Reverse-flank mapping");
     const std::string ste = prm.get("STE file");
+    std::vector<std::vector<double>> ste_rows;
+    std::vector<std::string> ste_headers;
+    std::filesystem::path ste_path(ste);
     if (c.law == LawKind::ste)
       {
-        std::filesystem::path f(ste);
-        if (f.is_relative() && !input_dir.empty())
-          f = std::filesystem::path(input_dir) / f;
-        if (ste.empty() || !std::filesystem::is_regular_file(f))
-          throw InputError("Dynamics/Mesh force/STE file", ste.empty() ? "(empty)" : f.string(),
-                           "an existing CSV file: position [deg], STE [um]");
-        for (const auto &row : read_csv_numbers(f))
+        if (ste_path.is_relative() && !input_dir.empty())
+          ste_path = std::filesystem::path(input_dir) / ste_path;
+        if (ste.empty() || !std::filesystem::is_regular_file(ste_path))
+          throw InputError("Dynamics/Mesh force/STE file", ste.empty() ? "(empty)" : ste_path.string(),
+                           "an existing CSV file: position [deg], STE [um], or sweep.csv of gearfem solve");
+        try
           {
-            if (row.size() < 2)
-              throw InputError("Dynamics/Mesh force/STE file", f.string(), ">= 2 columns");
-            c.ste_theta.push_back(row[0] * deg);
-            c.ste_values.push_back(row[1] * um);
+            ste_rows = read_csv_numbers(ste_path, &ste_headers);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError("Dynamics/Mesh force/STE file", ste_path.string(),
+                             "a CSV file of numbers with one header line", e.what());
           }
       }
     const std::string table = prm.get("Table file");
@@ -242,6 +295,9 @@ namespace gearfem::dynamics
     c.tooth_mass = prm.get_bool("Tooth mass");
     c.tooth_mass_energy_weighting = prm.get("Tooth mass weighting") == "quadratic";
     prm.leave_subsection();
+
+    if (c.law == LawKind::ste)
+      read_ste(c, ste_path.string(), ste_rows, ste_headers);
 
     prm.enter_subsection("Kahraman-Singh");
     c.ks_zeta = prm.get_double("Damping ratio");

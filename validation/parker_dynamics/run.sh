@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Parker pair up/down RMS-DTE sweeps at 100/200/340 N m with (1) the FE-calibrated torque
 # table (gearfem calibrate on the validation/parker_ste FE sweeps, calibrate_tables.prm) and
-# (2) the analytical Weber/Cornell torque table; analyse.py reports the resonance, jump
-# frequencies and contact loss and plots parker_sweeps.png / parker_sweeps_analytical.png.
+# (2) STE excitation with the raw FE STE curve (the FE sweep.csv, kbar from F_n/STE) and
+# (3) the analytical Weber/Cornell torque table; analyse.py reports the resonance, jump
+# frequencies and contact loss and plots parker_sweeps{,_ste,_analytical}.png.
 # Needs validation/parker_ste/results/plane_stress/results.h5 (validation/parker_ste/run.sh).
 # Usage: validation/parker_dynamics/run.sh   (GEARFEM=path/to/gearfem to override)
 set -euo pipefail
@@ -14,13 +15,15 @@ out="$here/results" # the sweep inputs name results/tables/mesh_torque.h5
   { echo "run validation/parker_ste/run.sh first (FE sweeps)" >&2; exit 1; }
 "$gearfem" calibrate "$here/calibrate_tables.prm" --output-dir "$out/tables" | grep -E "^tables|held out" || true
 for T in 100 200 340; do
-  for kind in fe analytical; do
-    prm="$here/sweep_${T}Nm.prm"; [ $kind = fe ] && prm="$here/sweep_fe_${T}Nm.prm"
+  for kind in fe ste analytical; do
+    prm="$here/sweep_${T}Nm.prm"; [ $kind = analytical ] || prm="$here/sweep_${kind}_${T}Nm.prm"
     /usr/bin/time -f "${kind} ${T} N m: wall %e s" "$gearfem" dynamics "$prm" \
       --output-dir "$out/${kind}_${T}Nm" | grep -E "natural frequency|warning" | sed "s/^/${kind} ${T} N m: /"
   done
 done
 /usr/bin/python3 "$here/analyse.py" "$here/parker_sweeps.png" \
   "Parker pair 50/50 m3 b20, zeta 0.02, FE-calibrated table" "$out"/fe_{100,200,340}Nm
+/usr/bin/python3 "$here/analyse.py" "$here/parker_sweeps_ste.png" \
+  "Parker pair 50/50 m3 b20, zeta 0.02, STE excitation from the FE STE" "$out"/ste_{100,200,340}Nm
 /usr/bin/python3 "$here/analyse.py" "$here/parker_sweeps_analytical.png" \
   "Parker pair 50/50 m3 b20, zeta 0.02, analytical Weber/Cornell table" "$out"/analytical_{100,200,340}Nm

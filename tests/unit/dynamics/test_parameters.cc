@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 using namespace gearfem::dynamics;
@@ -99,4 +101,45 @@ TEST(DynamicsParameters, BadInput)
   expect_error("subsection Dynamics\n subsection Mesh force\n set Law = STE\n"
                " set STE file = /nonexistent.csv\n end\nend\n",
                "STE file");
+}
+
+// Law = STE reads the sweep.csv of `gearfem solve` directly: the rows at the case's input
+// torque give STE(theta), and kbar = mean F_n / mean STE (the FE mean mesh stiffness; here
+// computed by hand from the rows written below). Another torque is refused, naming the
+// torques the file has.
+TEST(DynamicsParameters, SteFromFeSweep)
+{
+  const auto dir = std::filesystem::temp_directory_path() / "gearfem_ste_sweep_test";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "sweep.csv");
+    f << "torque [N m],position [-],roll angle [deg],STE [um],F_n [N],p_max [MPa]\n";
+    // z1 = 50: one mesh period is 7.2 deg; four positions at 100 N m, two at 200 N m.
+    f << "100,0,-6,4.0,1400,300\n100,1,-4,3.0,1400,300\n100,2,-2,3.5,1400,300\n100,3,0,4.5,1400,300\n";
+    f << "200,0,-6,8.0,2800,400\n200,1,-4,6.0,2800,400\n";
+  }
+  const std::string head = "subsection Dynamics\n subsection Pair\n set Pinion teeth = 50\n"
+                           " set Gear teeth = 50\n set Module = 3\n set Face width = 20\n end\n"
+                           " subsection Mesh force\n set Law = STE\n set STE file = " +
+                           (dir / "sweep.csv").string() + "\n end\n subsection Operating\n";
+  const DynamicsCase c = parse_text(head + " set Input torque = 100\n end\nend\n");
+  ASSERT_EQ(c.ste_theta.size(), 4u);
+  EXPECT_NEAR(c.ste_theta[1], -4 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(c.ste_values[3], 4.5e-6, 1e-18);
+  EXPECT_NEAR(c.ste_stiffness, 1400 / 3.75e-6, 1e-6 * 1400 / 3.75e-6); // mean F / mean STE
+  std::vector<std::string> notes;
+  const auto model = build_model(c, &notes);
+  EXPECT_NEAR(model->law().mean_stiffness(), 1400 / 3.75e-6, 1.0);
+  try
+    {
+      parse_text(head + " set Input torque = 150\n end\nend\n");
+      ADD_FAILURE() << "no error for a torque the file does not have";
+    }
+  catch (const gearfem::InputError &e)
+    {
+      const std::string w = e.what();
+      EXPECT_NE(w.find("STE file"), std::string::npos) << w;
+      EXPECT_NE(w.find("100 200"), std::string::npos) << w;
+    }
+  std::filesystem::remove_all(dir);
 }
