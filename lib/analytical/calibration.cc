@@ -14,10 +14,11 @@ namespace gearfem::analytical
   CalibratedMesh::CalibratedMesh(const PairCompliance &pairs, const CalibrationFactors &f)
     : pairs_(pairs)
     , f_(f)
+    , geo_(analytical::corner_geometry(pairs.line()))
   {
-    if (!(f.beam > 0) || !(f.foundation > 0) || !(f.hertz > 0) || !(f.body >= 0) || !(f.extended >= 0))
-      throw InputError("calibration factors", "beam/foundation/hertz > 0, body >= 0, R_e >= 0",
-                       "positive multipliers and non-negative compliances");
+    if (!(f.beam > 0) || !(f.foundation > 0) || !(f.hertz > 0) || !(f.body >= 0) || !(f.corner_radius >= 0))
+      throw InputError("calibration factors", "beam/foundation/hertz > 0, body >= 0, corner radius >= 0",
+                       "positive multipliers and non-negative compliances and radii");
   }
 
   double CalibratedMesh::ste(double phi1, double F, std::vector<double> *loads) const
@@ -25,11 +26,16 @@ namespace gearfem::analytical
     require_greater("mesh load", F, 0.0, "N");
     const PairLine &L = pairs_.line();
     const double g0   = L.g_C + L.rb1 * phi1;
-    // Pairs on the path and, with extended contact, up to one base pitch beyond A and E.
-    const double reach = f_.extended > 0 ? L.base_pitch : 0.0;
+    // Pairs on the path and, with corner contact, up to one base pitch beyond A and E.
+    const double reach = f_.corner ? L.base_pitch : 0.0;
     struct Pair
     {
-      double g, gap, c, F;
+      double g, gap, arm, c, F; // F: normal force along the touched flank's normal
+      // Hertz on a tip corner: its radius and the mate's involute radius at the touching
+      // point (rho_c = 0: involutes only), and the distance along the profile from the contact
+      // to the corner (0: on the corner).
+      bool pinion_corner;
+      double rho_c, rho_m, e;
     };
     std::vector<Pair> pairs;
     const int jlo = int(std::floor((L.g_A - reach - g0) / L.base_pitch)) - 1;
@@ -39,13 +45,31 @@ namespace gearfem::analytical
         const double g = g0 + j * L.base_pitch;
         if (g < L.g_A - reach || g >= L.g_E + reach)
           continue;
-        double gap = 0;
-        if (g < L.g_A || g >= L.g_E)
+        CornerContact cc{0.0, 1.0};
+        if (f_.corner)
+          cc = corner_contact(geo_, g, GapFrame::pinion);
+        if (!std::isfinite(cc.gap))
+          continue;
+        const bool end = g > L.g_C; // the pinion corner (near E) or the gear corner (near A)
+        Pair p{g, cc.gap, cc.arm, 0.0, F, end, 0.0, 0.0, 0.0};
+        if (f_.corner)
           {
-            const double d = g < L.g_A ? L.g_A - g : g - L.g_E;
-            gap            = d * d / (2 * f_.extended);
+            p.rho_c = f_.corner_radius > 0 ? f_.corner_radius : end ? geo_.rounding1 : geo_.rounding2;
+            if (cc.on_corner)
+              p.rho_m = cc.mate_curvature;
+            else
+              {
+                // On the involute: mate radius of curvature and profile arc length to the corner
+                // ((s_end^2 - s^2)/(2 rb) between rolls s and s_end on the corner's involute).
+                const double s = end ? g : L.length - g, s_end = end ? L.g_E : L.length - L.g_A;
+                const double rb = end ? L.rb1 : L.rb2;
+                p.rho_m = L.length - s;
+                p.e = std::max(0.0, (s_end * s_end - s * s) / (2 * rb));
+              }
+            if (!(p.rho_m > 0))
+              p.rho_c = 0;
           }
-        pairs.push_back({g, gap, 0.0, F});
+        pairs.push_back(p);
       }
     if (pairs.empty())
       throw SolverError("calibrated mesh: no pair in contact at roll angle " + to_string_g(phi1));
@@ -56,16 +80,35 @@ namespace gearfem::analytical
         for (auto &p : pairs)
           {
             const double gc = std::clamp(p.g, L.g_A, L.g_E);
-            const auto parts = pairs_.parts(gc, std::max(p.F, 1e-3 * F));
+            const double Fp = std::max(p.F, 1e-3 * F);
+            const auto parts = pairs_.parts(gc, Fp);
+            double hertz = parts.hertz;
+            if (p.rho_c > 0)
+              {
+                // The corner's Hertz term on the corner; on the involute within a Hertz
+                // half-width a of the corner the contact strip is cut by the corner: blend
+                // linearly from the corner (e = 0) to the involute (e >= a), so that the
+                // compliance is continuous at A and E.
+                const double w = p.e > 0 ? std::clamp(1 - p.e / pairs_.hertz_half_width(gc, Fp), 0.0, 1.0) : 1.0;
+                if (w > 0)
+                  {
+                    const double hc = p.pinion_corner ? pairs_.parts(gc, Fp, p.rho_c, p.rho_m).hertz
+                                                      : pairs_.parts(gc, Fp, p.rho_m, p.rho_c).hertz;
+                    hertz = (1 - w) * hertz + w * hc;
+                  }
+              }
             p.c = f_.beam * (parts.beam1 + parts.beam2) + f_.foundation * (parts.foundation1 + parts.foundation2) +
-                  f_.hertz * parts.hertz;
+                  f_.hertz * hertz;
           }
-        // Equal deflection with initial gaps: sum max(0, delta - gap_i)/c_i = F.
+        // Equal compression with initial gaps: a pair's normal approach is arm (delta - gap),
+        // its normal force arm (delta - gap)/c and its share of the line-of-action load
+        // arm^2 (delta - gap)/c: sum over the pairs with delta > gap = F.
         double a = 0, b = 0;
         std::size_t k = 0;
         for (; k < pairs.size(); ++k)
           {
-            a += 1 / pairs[k].c, b += pairs[k].gap / pairs[k].c;
+            const double kk = pairs[k].arm * pairs[k].arm / pairs[k].c;
+            a += kk, b += kk * pairs[k].gap;
             delta = (F + b) / a;
             if (k + 1 == pairs.size() || delta <= pairs[k + 1].gap)
               break;
@@ -73,7 +116,7 @@ namespace gearfem::analytical
         double change = 0;
         for (std::size_t i = 0; i < pairs.size(); ++i)
           {
-            const double Fi = i <= k ? std::max(0.0, delta - pairs[i].gap) / pairs[i].c : 0.0;
+            const double Fi = i <= k ? pairs[i].arm * std::max(0.0, delta - pairs[i].gap) / pairs[i].c : 0.0;
             change          = std::max(change, std::abs(Fi - pairs[i].F));
             pairs[i].F      = Fi;
           }
@@ -94,17 +137,24 @@ namespace gearfem::analytical
   {
     if (!(delta > 0))
       return 0.0;
-    // Fixed point on the secant stiffness: F <- F delta / ste(F) (STE is close to linear).
-    double F = delta * 3e8;
-    for (int it = 0; it < 100; ++it)
+    // ste(F) = delta, ste increasing in F and close to linear: one secant-stiffness step
+    // F <- F delta / ste(F), then secant iterations (safeguarded to stay positive).
+    double F0 = delta * 3e8, s0 = ste(phi1, F0) - delta;
+    double F1 = F0 * delta / (s0 + delta);
+    for (int it = 0; it < 60; ++it)
       {
-        const double s    = ste(phi1, F);
-        const double next = F * delta / s;
-        if (std::abs(next - F) <= 1e-12 * F)
-          return next;
-        F = next;
+        const double s1 = ste(phi1, F1) - delta;
+        if (std::abs(s1) <= 1e-13 * delta)
+          return F1;
+        double next = s1 != s0 ? F1 - s1 * (F1 - F0) / (s1 - s0) : F1 * delta / (s1 + delta);
+        if (!(next > 0) || !std::isfinite(next))
+          next = F1 * delta / (s1 + delta);
+        F0 = F1, s0 = s1, F1 = next;
+        if (std::abs(F1 - F0) <= 1e-13 * F1)
+          return F1;
       }
-    return F;
+    throw SolverError("calibrated mesh: load at compression " + to_string_g(delta) +
+                      " m did not converge at roll angle " + to_string_g(phi1) + " rad");
   }
 
   std::vector<SteErrors> ste_errors(const PairCompliance &pairs, const CalibrationFactors &f,
@@ -140,7 +190,7 @@ namespace gearfem::analytical
       if (!(s.ste > 0) || !(s.torque > 0))
         throw InputError("calibration samples", "STE " + to_string_g(s.ste) + " m at " + to_string_g(s.torque) + " N m",
                          "positive STE and torque");
-    // Parameters: log multipliers; body = x^2 1e-9 m/N; R_e = x^2 1e-2 m.
+    // Parameters: log multipliers; body = x^2 1e-9 m/N; corner radius = x^2 1e-4 m.
     struct Par
     {
       std::string name;
@@ -155,8 +205,8 @@ namespace gearfem::analytical
       par.push_back({"hertz", 2});
     if (mask.body)
       par.push_back({"body compliance", 3});
-    if (mask.extended)
-      par.push_back({"extended-contact radius", 4});
+    if (mask.corner_radius)
+      par.push_back({"corner radius", 4});
     const int p = int(par.size()), n = int(samples.size());
     if (p == 0)
       throw InputError("Calibration/Fit factors", "(none)", "at least one factor");
@@ -172,7 +222,7 @@ namespace gearfem::analytical
             case 1: f.foundation = std::exp(x[i]); break;
             case 2: f.hertz = std::exp(x[i]); break;
             case 3: f.body = x[i] * x[i] * 1e-9; break;
-            default: f.extended = x[i] * x[i] * 1e-2; break;
+            default: f.corner_radius = x[i] * x[i] * 1e-4; break;
           }
       return f;
     };
@@ -184,7 +234,7 @@ namespace gearfem::analytical
           case 1: x[i] = std::log(start.foundation); break;
           case 2: x[i] = std::log(start.hertz); break;
           case 3: x[i] = std::max(std::sqrt(start.body / 1e-9), 0.3); break;
-          default: x[i] = std::max(std::sqrt(start.extended / 1e-2), 1.0); break;
+          default: x[i] = std::max(std::sqrt(start.corner_radius / 1e-4), 0.3); break;
         }
     // A trial step that leaves the admissible range (overflowing multiplier, no load path)
     // gets a huge residual, so that Levenberg-Marquardt rejects it and damps.
@@ -280,7 +330,7 @@ namespace gearfem::analytical
             case 1: v = res.factors.foundation, se = v * sx; break;
             case 2: v = res.factors.hertz, se = v * sx; break;
             case 3: v = res.factors.body, se = 2 * std::abs(x[i]) * 1e-9 * sx; break;
-            default: v = res.factors.extended, se = 2 * std::abs(x[i]) * 1e-2 * sx; break;
+            default: v = res.factors.corner_radius, se = 2 * std::abs(x[i]) * 1e-4 * sx; break;
           }
         res.values.push_back(v);
         res.std_error.push_back(se);

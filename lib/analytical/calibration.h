@@ -2,12 +2,15 @@
 // Calibration of an analytical mesh model against FE static transmission error (issue 5,
 // section 4). The model: the tooth-pair compliance of PairCompliance split into its beam,
 // foundation and Hertz parts, each with a multiplier; a body compliance in series with the
-// whole mesh (rim, web and hub deformation that the tooth models leave out); and extended
-// contact outside the geometric path A..E: a pair a distance d beyond A or E starts with the
-// rigid separation d^2 / (2 R_e) along the line of action and carries load once the mesh
-// deflection exceeds it (the FE shows this as the narrowing of the single-pair zone under
-// load). Load sharing by equal deflection with the Hertz nonlinearity iterated on the
-// pair loads. Light layer (Eigen only). SI units.
+// whole mesh (rim, web and hub deformation that the tooth models leave out); and the corner
+// contact outside the geometric path A..E (seed 000 OA/BΓ, corner.h): a pair beyond A or E
+// starts with the exact rigid corner gap (gear held, pinion turned, as in `gearfem solve`)
+// and carries load once the mesh deflection exceeds it, along the normal of the touched
+// flank (lever arm of corner.h). The FE shows this as the narrowing of the single-pair zone
+// under load. The one corner parameter is the effective radius of curvature of the tip
+// corner in the Hertz term of a corner contact (a sharp corner has none; the FE resolves it
+// with elements of finite size). Load sharing by equal deflection with the Hertz
+// nonlinearity iterated on the pair loads. Light layer (Eigen only). SI units.
 #include "analytical/tooth.h"
 
 #include <string>
@@ -28,7 +31,11 @@ namespace gearfem::analytical
     double foundation = 1;  ///< multiplier on the fillet-foundation compliance
     double hertz = 1;       ///< multiplier on the Hertz compliance
     double body = 0;        ///< series body compliance [m/N] (of the normal load)
-    double extended = 0;    ///< R_e [m]; 0: no extended contact
+    bool corner = true;     ///< corner contact OA/BΓ outside A..E (exact rigid gap, corner.h)
+    /// Radius of curvature of the tip corner [m] in the Hertz term of a corner contact (against
+    /// the mating involute's radius at the touching point). 0: the tip rounding of the
+    /// geometry (PairLine) if it has one, else the involute radii at the nearest path end.
+    double corner_radius = 0;
   };
 
   /// The calibrated mesh model.
@@ -49,12 +56,14 @@ namespace gearfem::analytical
   private:
     PairCompliance pairs_;
     CalibrationFactors f_;
+    CornerGeometry geo_;
   };
 
   /// Which factors the fit may change.
   struct FitMask
   {
-    bool beam = true, foundation = true, hertz = true, body = true, extended = true;
+    bool beam = true, foundation = true, hertz = true, body = true;
+    bool corner_radius = false; ///< the corner radius (start value from CalibrationFactors, > 0)
   };
 
   /// Error statistics of a model against samples [relative].
@@ -80,7 +89,7 @@ namespace gearfem::analytical
                                     const std::vector<SteSample> &samples);
 
   /// Levenberg-Marquardt fit of the masked factors minimising the relative STE error over
-  /// all samples (multipliers in log space, so they stay positive; body and R_e >= 0).
+  /// all samples (multipliers in log space, so they stay positive; body and corner radius >= 0).
   /// Standard errors from sigma^2 (J^T J)^-1; factors whose correlation exceeds 0.98 or
   /// whose relative standard error exceeds 50 % are reported as not identifiable.
   FitResult fit_factors(const PairCompliance &pairs, const std::vector<SteSample> &samples,

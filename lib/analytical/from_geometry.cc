@@ -77,6 +77,14 @@ namespace gearfem::analytical
     l.g_C = pair.point("C").g;
     l.g_E = pair.point("E").g;
     l.base_pitch = pair.base_pitch();
+    l.center_distance = pair.center_distance();
+    for (int i : {1, 2})
+      {
+        const geometry::ToothProfile &p = pair.gear(i);
+        (i == 1 ? l.r_tip1 : l.r_tip2) = p.radii().tip;
+        (i == 1 ? l.r_form1 : l.r_form2) = p.radii().form;
+        (i == 1 ? l.rounding1 : l.rounding2) = p.parameters().rack.tip_radius * p.parameters().rack.module;
+      }
     return l;
   }
 

@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gearfem::analytical
@@ -104,9 +105,23 @@ namespace gearfem::analytical
   {
     if (!(x > 0.0))
       return 0.0;
+    if (!m.corner)
+      {
+        double F = 0.0;
+        for (double g : contact_positions(m, phi))
+          F += pair_load_at(m, g, x);
+        return F;
+      }
+    check(m);
+    // Every pair within one base pitch beyond A and E (each once).
+    const double g0 = m.g_C + m.rb1 * phi, lo = m.g_A - m.base_pitch, hi = m.g_E + m.base_pitch;
     double F = 0.0;
-    for (double g : contact_positions(m, phi))
-      F += pair_load_at(m, g, x);
+    for (double g = g0 + std::ceil((lo - g0) / m.base_pitch) * m.base_pitch; g < hi; g += m.base_pitch)
+      {
+        const CornerContact c = (g >= m.g_A && g <= m.g_E) ? CornerContact{0.0, 1.0} : m.corner(g);
+        if (x > c.gap)
+          F += c.arm * pair_load_at(m, std::clamp(g, m.g_A, m.g_E), c.arm * (x - c.gap));
+      }
     return F;
   }
 

@@ -131,15 +131,47 @@ namespace gearfem::analytical
 
   double PairCompliance::hertz(double g, double F, double h1, double h2) const
   {
+    return hertz_radii(F, g, line_.length - g, h1, h2);
+  }
+
+  double PairCompliance::hertz_radii(double F, double rho1, double rho2, double h1, double h2) const
+  {
     if (opt_.model == StiffnessModel::potential_energy)
       return 1.0 / hertz_stiffness_pe(e1_, e2_, b_);
     require_greater("tooth pair load", F, 0.0, "N");
-    const HertzLineContact h = hertz_line_contact(F / b_, g, line_.length - g, e1_, e2_);
+    const HertzLineContact h = hertz_line_contact(F / b_, rho1, rho2, e1_, e2_);
     return (weber_hertz_approach(F, b_, h.half_width, h1, e1_) +
             weber_hertz_approach(F, b_, h.half_width, h2, e2_)) / F;
   }
 
-  MeshModel PairCompliance::mesh_model() const
+  double PairCompliance::hertz_half_width(double g, double F) const
+  {
+    require_greater("tooth pair load", F, 0.0, "N");
+    return hertz_line_contact(F / b_, g, line_.length - g, e1_, e2_).half_width;
+  }
+
+  PairCompliance::Parts PairCompliance::parts(double g, double F, double rho1, double rho2) const
+  {
+    Parts p = parts(g, F);
+    if (opt_.model == StiffnessModel::weber_cornell)
+      {
+        const bool table = !grid_.empty();
+        p.hertz = hertz_radii(F, rho1, rho2, table ? interpolate(4, g) : 0.0, table ? interpolate(5, g) : 0.0);
+      }
+    return p;
+  }
+
+  CornerGeometry corner_geometry(const PairLine &l)
+  {
+    CornerGeometry c;
+    c.rb1 = l.rb1, c.rb2 = l.rb2, c.length = l.length, c.g_A = l.g_A, c.g_E = l.g_E;
+    c.r_form1 = l.r_form1, c.r_form2 = l.r_form2;
+    c.r_tip1 = l.r_tip1, c.r_tip2 = l.r_tip2;
+    c.rounding1 = l.rounding1, c.rounding2 = l.rounding2;
+    return c;
+  }
+
+  MeshModel PairCompliance::mesh_model(bool with_corners) const
   {
     MeshModel m;
     m.g_A = line_.g_A;
@@ -149,6 +181,11 @@ namespace gearfem::analytical
     m.rb1 = line_.rb1;
     const PairCompliance self = *this;
     m.pair_compliance = [self](double g, double F) { return self(g, F); };
+    if (with_corners)
+      {
+        const CornerGeometry geo = corner_geometry(line_);
+        m.corner = [geo](double g) { return corner_contact(geo, g, GapFrame::pinion); };
+      }
     return m;
   }
 } // namespace gearfem::analytical

@@ -3,6 +3,7 @@
 // (any origin: the generated profile of lib/geometry, or a closed form in tests).
 // SI units (m, N, Pa, rad).
 #include "analytical/compliance.h"
+#include "analytical/corner.h"
 #include "analytical/elastic.h"
 #include "analytical/mesh_cycle.h"
 
@@ -50,7 +51,16 @@ namespace gearfem::analytical
     double length = 0;       ///< T1T2 = a sin(alpha_w)
     double g_A = 0, g_C = 0, g_E = 0;
     double base_pitch = 0;
+    // For the corner contact outside A..E (corner.h); 0 where unknown.
+    double center_distance = 0;          ///< a [m]
+    double r_tip1 = 0, r_tip2 = 0;       ///< tip radii [m]
+    double r_form1 = 0, r_form2 = 0;     ///< start of the involute flanks (end of the fillets) [m]
+    double rounding1 = 0, rounding2 = 0; ///< tip rounding radii [m] (0: sharp corners)
   };
+
+  /// The corner-contact geometry of a pair line. With no tip rounding the corners are the
+  /// ends of the involutes at E and A; with a rounding the tip radii must be set.
+  CornerGeometry corner_geometry(const PairLine &line);
 
   /// Compliance of one tooth pair as a function of contact position g and load F. The
   /// load-independent tooth parts (beam, foundation) are computed once on a grid of
@@ -70,11 +80,19 @@ namespace gearfem::analytical
       double total() const { return beam1 + foundation1 + beam2 + foundation2 + hertz; }
     };
     Parts parts(double g, double F) const;
+    /// The same with the Hertz term for the given radii of curvature of the pinion and gear
+    /// profiles at the contact [m] (a corner rounding on a mating involute) instead of the
+    /// involute radii g and T1T2 - g; the tooth parts and Weber depths at g.
+    Parts parts(double g, double F, double rho1, double rho2) const;
+    /// Hertz half-width [m] of the involute contact at g under normal load F.
+    double hertz_half_width(double g, double F) const;
     /// Exact parts (no table), for testing the table.
     Parts parts_exact(double g, double F) const;
     double operator()(double g, double F) const { return parts(g, F).total(); }
-    /// The MeshModel for the load-sharing solver (holds a copy of this object).
-    MeshModel mesh_model() const;
+    /// The MeshModel for the load-sharing solver (holds a copy of this object); with
+    /// `with_corners`, also the corner contacts OA/BΓ outside A..E (corner.h, the gear held
+    /// and the pinion turned), whose compliance is taken at the nearest end of the path.
+    MeshModel mesh_model(bool with_corners = false) const;
 
     const PairLine &line() const { return line_; }
     const PairModelOptions &options() const { return opt_; }
@@ -83,6 +101,7 @@ namespace gearfem::analytical
     double interpolate(int k, double g) const;
     double weber_depth(int i, double g) const;
     double hertz(double g, double F, double h1, double h2) const;
+    double hertz_radii(double F, double rho1, double rho2, double h1, double h2) const;
     std::array<InvoluteTooth, 2> t_;
     PlaneElastic e1_, e2_;
     double b_;

@@ -43,14 +43,19 @@ namespace gearfem::commands
                         "to the input file). Units: none.");
       prm.declare_entry("Model", "weber-cornell", Selection("weber-cornell|potential-energy"),
                         "Analytical pair compliance that is calibrated. Units: none.");
-      prm.declare_entry("Fit factors", "beam, hertz, body, extended",
-                        MultipleSelection("beam|foundation|hertz|body|extended"),
+      prm.declare_entry("Fit factors", "beam, hertz, body, corner",
+                        MultipleSelection("beam|foundation|hertz|body|corner|extended"),
                         "Factors the fit may change: multipliers on the beam, foundation and Hertz "
-                        "compliances, a series body compliance, and the extended-contact radius. "
-                        "Units: none.");
-      prm.declare_entry("Extended-contact radius", "50", Double(),
-                        "Start value of R_e (rigid separation d^2/(2 R_e) beyond A and E). Units: mm. "
-                        "Allowed: > 0.");
+                        "compliances, a series body compliance, and the effective radius of the tip "
+                        "corners in the Hertz term of the corner contact (`corner`; `extended` is its "
+                        "former name, kept for old inputs). Units: none.");
+      prm.declare_entry("Corner contact", "true", Bool(),
+                        "Corner contact OA/BΓ outside the path A..E with the exact rigid gap of the "
+                        "tip corners (lib/analytical/corner.h). Units: none.");
+      prm.declare_entry("Corner radius", "0.1", Double(),
+                        "Radius of curvature of the tip corners in the Hertz term of a corner contact "
+                        "(the start value when `corner` is fitted); 0: the tip rounding of the geometry, "
+                        "or the involute radii at the path end for sharp teeth. Units: mm. Allowed: >= 0.");
       prm.declare_entry("Table positions", "200", Integer(), "Roll angles over one pitch in the tables. Units: none. Allowed: >= 8.");
       prm.declare_entry("Table loads", "50", Integer(), "Load (or compression) points in the tables. Units: none. Allowed: >= 4.");
       prm.declare_entry("Table load factor", "2", Double(),
@@ -140,14 +145,16 @@ namespace gearfem::commands
       const auto files = dealii::Utilities::split_string_list(prm.get("Results files"), ',');
       const std::string model = prm.get("Model");
       const auto fit_set = dealii::Utilities::split_string_list(prm.get("Fit factors"), ',');
-      const double Re0   = prm.get_double("Extended-contact radius") * 1e-3;
+      const bool corner  = prm.get_bool("Corner contact");
+      const double rho0  = prm.get_double("Corner radius") * 1e-3;
       const int n_theta  = prm.get_integer("Table positions");
       const int n_load   = prm.get_integer("Table loads");
       const double lf    = prm.get_double("Table load factor");
       prm.leave_subsection();
       if (files.empty())
         throw InputError("Calibration/Results files", "(empty)", "at least one results.h5 of `gearfem solve`");
-      require_greater("Calibration/Extended-contact radius", Re0 * 1e3, 0.0, "mm");
+      if (!(rho0 >= 0))
+        throw InputError("Calibration/Corner radius", to_string_g(rho0 * 1e3) + " mm", ">= 0");
       if (n_theta < 8)
         throw InputError("Calibration/Table positions", std::to_string(n_theta), ">= 8");
       if (n_load < 4)
@@ -157,7 +164,12 @@ namespace gearfem::commands
       std::set<std::string> fs(fit_set.begin(), fit_set.end());
       an::FitMask mask;
       mask.beam = fs.count("beam"), mask.foundation = fs.count("foundation"), mask.hertz = fs.count("hertz");
-      mask.body = fs.count("body"), mask.extended = fs.count("extended");
+      mask.body = fs.count("body"), mask.corner_radius = fs.count("corner") || fs.count("extended");
+      if (mask.corner_radius && !corner)
+        throw InputError("Calibration/Fit factors", "corner", "no `corner` without corner contact",
+                         "Calibration/Corner contact is false");
+      if (mask.corner_radius && !(rho0 > 0))
+        throw InputError("Calibration/Corner radius", "0 mm", "> 0 when `corner` is fitted (the start value)");
 
       const std::string hash = geometry::geometry_fingerprint(pair);
       std::vector<an::SteSample> samples;
@@ -192,14 +204,18 @@ namespace gearfem::commands
                                   std::min(pair.gear(1).parameters().face_width, pair.gear(2).parameters().face_width),
                                   an::pair_line(pair), opt);
       an::CalibrationFactors start;
-      start.extended = mask.extended ? Re0 : 0.0;
-      const an::CalibrationFactors plain;
+      start.corner        = corner;
+      start.corner_radius = rho0;
+      an::CalibrationFactors plain; // uncalibrated: multipliers 1, no body; the same corner model
+      plain.corner        = corner;
+      plain.corner_radius = rho0;
       const auto before = an::ste_errors(pc, plain, samples);
       const auto fit    = an::fit_factors(pc, samples, start, mask);
       const auto after  = an::ste_errors(pc, fit.factors, samples);
 
       // Cross-validation: fit without one torque, test on it.
       std::vector<std::pair<double, an::SteErrors>> cv;
+      std::map<double, an::CalibrationFactors> cv_factors;
       if (torques.size() >= 2)
         for (const double T : torques)
           {
@@ -208,6 +224,7 @@ namespace gearfem::commands
               (s.torque == T ? test : train).push_back(s);
             const auto f = an::fit_factors(pc, train, start, mask);
             cv.emplace_back(T, an::ste_errors(pc, f.factors, test).front());
+            cv_factors.emplace(T, f.factors);
           }
 
       // Report.
@@ -220,7 +237,7 @@ namespace gearfem::commands
       rep << "\n\n## Fitted factors\n\n| factor | value | standard error |\n|---|---|---|\n";
       for (std::size_t i = 0; i < fit.names.size(); ++i)
         {
-          const bool body = fit.names[i] == "body compliance", re = fit.names[i] == "extended-contact radius";
+          const bool body = fit.names[i] == "body compliance", re = fit.names[i] == "corner radius";
           const double s  = body ? 1e9 : re ? 1e3 : 1.0;
           rep << "| " << fit.names[i] << (body ? " [m/N x 1e-9]" : re ? " [mm]" : " [-]") << " | "
               << fit.values[i] * s << " | " << fit.std_error[i] * s << " |\n";
@@ -242,22 +259,42 @@ namespace gearfem::commands
           if (!found)
             rep << "- | - |\n";
         }
-      rep << "\n`held out`: factors fitted on the other torques only, tested on this one.\n";
+      rep << "\n`held out`: factors fitted on the other torques only, tested on this one";
+      if (!cv_factors.empty())
+        {
+          rep << " (beam / foundation / Hertz multipliers, body compliance [m/N x 1e-9], corner radius [mm]):\n\n";
+          for (const auto &[T, f] : cv_factors)
+            rep << "- without " << T << " N m: " << f.beam << " / " << f.foundation << " / " << f.hertz << ", "
+                << f.body * 1e9 << ", " << f.corner_radius * 1e3 << "\n";
+        }
+      else
+        rep << ".\n";
       write_file_atomically(ctx.output_dir / "calibration.md", rep.str());
       out << rep.str();
       for (const auto &w : fit.warnings)
         std::cerr << "warning: " << w << std::endl;
 
-      // FE against the model before and after, per position.
+      // FE against the model before and after (and held out), per position.
       Table cmp;
-      for (const auto &[n, u] : std::vector<std::pair<std::string, std::string>>{
-             {"torque", "N m"}, {"roll angle", "deg"}, {"STE FE", "um"}, {"STE before", "um"}, {"STE after", "um"}})
+      for (const auto &[n, u] : std::vector<std::pair<std::string, std::string>>{{"torque", "N m"},
+                                                                                 {"roll angle", "deg"},
+                                                                                 {"STE FE", "um"},
+                                                                                 {"STE before", "um"},
+                                                                                 {"STE after", "um"},
+                                                                                 {"STE held out", "um"}})
         cmp.add_column(n, u);
       const an::CalibratedMesh m0(pc, plain), m1(pc, fit.factors);
+      std::map<double, an::CalibratedMesh> mcv;
+      for (const auto &[T, f] : cv_factors)
+        mcv.emplace(T, an::CalibratedMesh(pc, f));
       const double rb1 = m1.base_radius();
       for (const auto &s : samples)
-        cmp.add_row({s.torque, s.roll_angle * 180 / pi, s.ste * 1e6, m0.ste(s.roll_angle, s.torque / rb1) * 1e6,
-                     m1.ste(s.roll_angle, s.torque / rb1) * 1e6});
+        {
+          const auto it     = mcv.find(s.torque);
+          const double held = it == mcv.end() ? std::nan("") : it->second.ste(s.roll_angle, s.torque / rb1) * 1e6;
+          cmp.add_row({s.torque, s.roll_angle * 180 / pi, s.ste * 1e6, m0.ste(s.roll_angle, s.torque / rb1) * 1e6,
+                       m1.ste(s.roll_angle, s.torque / rb1) * 1e6, held});
+        }
       cmp.write_csv(ctx.output_dir / "calibration.csv");
 
       // Tables for the dynamics module.
@@ -318,7 +355,8 @@ namespace gearfem::commands
     c.summary     = "fit the analytical mesh model to FE STE (gearfem solve results) and write stiffness tables";
     c.description = "Reads one or more results.h5 of `gearfem solve` for the same pair (geometry hash\n"
                     "checked), fits multipliers on the beam, foundation and Hertz compliances, a body\n"
-                    "compliance and an extended-contact radius, reports the STE error before/after and\n"
+                    "compliance and the Hertz radius of the tip corners in corner contact, reports the\n"
+                    "STE error before/after and\n"
                     "with each torque held out, and writes mesh_stiffness.h5 (k(theta, F)),\n"
                     "mesh_torque.h5 (T(theta, delta)) (docs/mesh-tables.md), ste_table.csv,\n"
                     "calibration.md, calibration.csv and calibration.png.\n"

@@ -143,8 +143,9 @@ namespace gearfem::commands
                                         c.face_width, analytical::pair_line(pair));
     }
 
-    /// The seed 000 torque table T(theta, delta) (Gkimisis 2019 eqs. 3.10-3.17) of the
-    /// Weber/Cornell model (lib/analytical) on the generated pair, as a dynamics TableLaw:
+    /// The seed 000 torque table T(theta, delta) (Gkimisis 2019 eqs. 3.10-3.17, with the
+    /// corner contacts OA/BΓ) of the Weber/Cornell model (lib/analytical) on the generated
+    /// pair, as a dynamics TableLaw:
     /// 128 positions over one mesh period from the start of contact A, 41 compressions from
     /// 0 to 10 F_static / k_min (k_min: smallest secant mesh stiffness at F_static).
     std::shared_ptr<const dyn::MeshForceLaw> analytical_table(const dyn::DynamicsCase &c,
@@ -152,7 +153,9 @@ namespace gearfem::commands
                                                               std::vector<std::string> &notes)
     {
       const geometry::GearPair pair = generated_pair(c);
-      const analytical::MeshModel mm = pair_compliance(c, pair).mesh_model();
+      // With the corner contacts OA/BΓ of seed 000 (lib/analytical/corner.h): outside A..E a
+      // pair carries load once the compression exceeds the rigid corner gap.
+      const analytical::MeshModel mm = pair_compliance(c, pair).mesh_model(true);
       const double F = c.input_torque / mm.rb1;
       double kmin = 1e300;
       for (const auto &st : analytical::mesh_cycle(mm, F, 64))
@@ -171,7 +174,7 @@ namespace gearfem::commands
       t.require_covers_load(F);
       if (backlash < 0)
         backlash = pair.normal_backlash();
-      notes.push_back("analytical torque table (Weber/Cornell, plane stress): 128 x 41, delta up to " +
+      notes.push_back("analytical torque table (Weber/Cornell, plane stress, corner contact OA/BG): 128 x 41, delta up to " +
                       to_string_g(10 * F / kmin * 1e6) + " um; generated-pair backlash " +
                       to_string_g(pair.normal_backlash() * 1e6) + " um");
       auto law = std::make_shared<dyn::TableLaw>(t, c.theta_interpolation);
