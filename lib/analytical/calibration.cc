@@ -157,6 +157,25 @@ namespace gearfem::analytical
                       " m did not converge at roll angle " + to_string_g(phi1) + " rad");
   }
 
+  double CalibratedMesh::torque(double phi1, double delta, double b, double psi) const
+  {
+    const double rb1 = base_radius();
+    if (delta > 0)
+      return rb1 * load_at(phi1, delta);
+    if (delta >= -b)
+      return 0.0;
+    return -rb1 * load_at(psi - phi1, -delta - b);
+  }
+
+  double reverse_offset(const InvoluteTooth &pinion, const PairLine &L, double b)
+  {
+    if (!(L.center_distance > 0) || !(L.rb1 > 0) || !(L.rb2 > 0))
+      throw InputError("reverse-flank offset: the pair line has no centre distance");
+    const double rw1     = L.center_distance * L.rb1 / (L.rb1 + L.rb2);
+    const double alpha_w = std::acos(L.rb1 / rw1);
+    return 2 * (pinion.psi_b - (std::tan(alpha_w) - alpha_w)) - b / (2 * L.rb1);
+  }
+
   std::vector<SteErrors> ste_errors(const PairCompliance &pairs, const CalibrationFactors &f,
                                     const std::vector<SteSample> &samples)
   {

@@ -50,6 +50,12 @@ namespace gearfem::analytical
     double stiffness(double phi1, double F) const { return F / ste(phi1, F); }
     /// Normal load [N] at mesh compression delta [m] (the inverse of ste(); 0 for delta <= 0).
     double load_at(double phi1, double delta) const;
+    /// Pinion torque T(phi1, delta) [N m] of the two-sided mesh-table contract
+    /// (docs/mesh-tables.md, version 2) for a total clearance b >= 0 along the line of action:
+    /// r_b1 load_at(phi1, delta) for delta > 0; 0 for -b <= delta <= 0 (loss of contact);
+    /// -r_b1 load_at(reverse_offset - phi1, -delta - b) for delta < -b (back contact on the
+    /// coast flanks, mapped onto the drive flanks of the symmetric teeth: seed 000, 4.11).
+    double torque(double phi1, double delta, double backlash, double reverse_offset) const;
     const CalibrationFactors &factors() const { return f_; }
     double base_radius() const { return pairs_.line().rb1; }
 
@@ -58,6 +64,12 @@ namespace gearfem::analytical
     CalibrationFactors f_;
     CornerGeometry geo_;
   };
+
+  /// The reverse-flank mapping offset psi [rad] of seed 000 (4.11), theta_r = psi - theta:
+  /// the pinion's angular tooth thickness at the working pitch circle, 2 (psi_b - inv
+  /// alpha_w), thinned by the pinion's half of a clearance b [m] (b / (2 r_b1)): the backlash
+  /// is taken as shared equally by the two gears, as a thickness coefficient C_f on both does.
+  double reverse_offset(const InvoluteTooth &pinion, const PairLine &line, double backlash);
 
   /// Which factors the fit may change.
   struct FitMask

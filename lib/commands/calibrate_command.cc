@@ -60,6 +60,11 @@ namespace gearfem::commands
       prm.declare_entry("Table loads", "50", Integer(), "Load (or compression) points in the tables. Units: none. Allowed: >= 4.");
       prm.declare_entry("Table load factor", "2", Double(),
                         "Largest table load over the largest FE load. Units: none. Allowed: >= 1.");
+      prm.declare_entry("Backlash", "-1", Double(),
+                        "Total clearance b along the line of action for a two-sided T(theta, delta) "
+                        "table (format version 2): T = 0 on [-b, 0] and the reverse-flank branch "
+                        "below -b (coast flanks mapped onto the drive flanks, b shared equally by "
+                        "the two gears); < 0: a one-sided table (delta >= 0). Units: um.");
       prm.leave_subsection();
     }
 
@@ -150,6 +155,7 @@ namespace gearfem::commands
       const int n_theta  = prm.get_integer("Table positions");
       const int n_load   = prm.get_integer("Table loads");
       const double lf    = prm.get_double("Table load factor");
+      const double b_um  = prm.get_double("Backlash");
       prm.leave_subsection();
       if (files.empty())
         throw InputError("Calibration/Results files", "(empty)", "at least one results.h5 of `gearfem solve`");
@@ -302,10 +308,11 @@ namespace gearfem::commands
       const double period = 2 * pi / pair.gear(1).teeth();
       const double phiA  = pair.point("A").roll_angle;
       const double Fmax  = lf * *torques.rbegin() / rb1;
-      dynamics::MeshTable kt, tt;
+      dynamics::MeshTable kt, tt, et;
       kt.kind = dynamics::MeshTable::Kind::stiffness_vs_load;
       tt.kind = dynamics::MeshTable::Kind::torque_vs_compression;
-      for (auto *t : {&kt, &tt})
+      et.kind = dynamics::MeshTable::Kind::ste_vs_torque;
+      for (auto *t : {&kt, &tt, &et})
         {
           t->period = period, t->base_radius = rb1, t->geometry_hash = hash;
           for (int i = 0; i < n_theta; ++i)
@@ -323,11 +330,32 @@ namespace gearfem::commands
             dmax = std::max(dmax, s);
           }
       tt.second_unit = "m", tt.value_unit = "N*m";
+      std::vector<double> drive;
       for (int j = 0; j < n_load; ++j)
-        tt.second.push_back(dmax * j / (n_load - 1));
+        drive.push_back(dmax * j / (n_load - 1));
+      double psi = 0;
+      if (b_um >= 0)
+        {
+          // Two-sided: reverse flank below -b, the gap [-b, 0], the drive flank above 0.
+          tt.backlash = b_um * 1e-6;
+          psi = an::reverse_offset(an::involute_tooth(pair.gear(1)), pc.line(), tt.backlash);
+          for (int j = n_load - 1; j >= 0; --j)
+            tt.second.push_back(-tt.backlash - drive[j]);
+          if (tt.backlash > 0)
+            tt.second.push_back(0.0);
+          tt.second.insert(tt.second.end(), drive.begin() + 1, drive.end());
+        }
+      else
+        tt.second = drive;
       for (const double th : tt.theta)
         for (const double d : tt.second)
-          tt.values.push_back(rb1 * m1.load_at(th, d));
+          tt.values.push_back(b_um >= 0 ? m1.torque(th, d, tt.backlash, psi) : rb1 * m1.load_at(th, d));
+      et.second_unit = "N*m", et.value_unit = "m";
+      for (const double F : kt.second)
+        et.second.push_back(F * rb1);
+      for (std::size_t i = 0; i < kt.theta.size(); ++i)
+        for (std::size_t j = 0; j < kt.second.size(); ++j)
+          et.values.push_back(kt.second[j] / kt.value(i, j)); // STE = F / k
       Table st;
       st.add_column("roll angle", "deg");
       st.add_column("torque", "N m");
@@ -340,10 +368,14 @@ namespace gearfem::commands
                                      now_utc()};
       io::write_mesh_table(ctx.output_dir / "mesh_stiffness.h5", kt, prov);
       io::write_mesh_table(ctx.output_dir / "mesh_torque.h5", tt, prov);
+      io::write_mesh_table(ctx.output_dir / "mesh_ste.h5", et, prov);
       st.write_csv(ctx.output_dir / "ste_table.csv");
-      out << "\ntables: k(theta, F) and T(theta, delta) " << n_theta << " x " << n_load << " (F up to "
-          << Fmax << " N, delta up to " << dmax * 1e6 << " um) in " << t_tables
-          << " s: mesh_stiffness.h5, mesh_torque.h5, ste_table.csv\n";
+      out << "\ntables: k(theta, F), T(theta, delta) and STE(theta, T) " << n_theta << " x " << n_load
+          << " (F up to " << Fmax << " N, delta up to " << dmax * 1e6 << " um"
+          << (b_um >= 0 ? ", two-sided T with backlash " + to_string_g(b_um) + " um and reverse-flank offset " +
+                            to_string_g(psi * 180 / pi) + " deg" :
+                          std::string())
+          << ") in " << t_tables << " s: mesh_stiffness.h5, mesh_torque.h5, mesh_ste.h5, ste_table.csv\n";
       run_plot_script("plot_calibration.py", {ctx.output_dir.string()}, &out);
     }
   } // namespace
@@ -358,7 +390,8 @@ namespace gearfem::commands
                     "compliance and the Hertz radius of the tip corners in corner contact, reports the\n"
                     "STE error before/after and\n"
                     "with each torque held out, and writes mesh_stiffness.h5 (k(theta, F)),\n"
-                    "mesh_torque.h5 (T(theta, delta)) (docs/mesh-tables.md), ste_table.csv,\n"
+                    "mesh_torque.h5 (T(theta, delta), two-sided with Backlash >= 0), mesh_ste.h5\n"
+                    "(STE(theta, T)) (docs/mesh-tables.md), ste_table.csv,\n"
                     "calibration.md, calibration.csv and calibration.png.\n"
                     "Sample run:\n"
                     "  gearfem calibrate validation/analytical_vs_fe/calibrate.prm\n";

@@ -221,13 +221,14 @@ namespace gearfem::commands
           throw InputError(entry + " = " + c.table_file + " does not cover Dynamics/Operating/Input torque = " +
                            to_string_g(c.input_torque) + " N m: " + e.what());
         }
-      if (backlash < 0)
+      if (backlash < 0 && !t.two_sided()) // a two-sided table brings its own backlash
         backlash = pair.normal_backlash();
       const bool torque = t.kind == dyn::MeshTable::Kind::torque_vs_compression;
       notes.push_back(std::string("table file ") + c.table_file + ": " + (torque ? "T(theta, delta)" : "k(theta, F)") +
                       " " + std::to_string(t.theta.size()) + " x " + std::to_string(t.second.size()) +
                       ", valid " + to_string_g(info.valid_min * (torque ? 1e6 : 1)) + " .. " +
                       to_string_g(info.valid_max * (torque ? 1e6 : 1)) + (torque ? " um" : " N") +
+                      (t.two_sided() ? ", two-sided (backlash " + to_string_g(t.backlash * 1e6) + " um)" : "") +
                       ", geometry hash " + (t.geometry_hash.empty() ? "(none)" : t.geometry_hash) +
                       (c.table_hash.empty() ? " (not checked)" : " (checked)") + ", source: " +
                       info.provenance.source);

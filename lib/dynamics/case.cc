@@ -127,6 +127,16 @@ namespace gearfem::dynamics
     contact.backlash = c.backlash >= 0 ? c.backlash : pair.backlash;
     contact.reverse_mapping = c.reverse_mapping;
     contact.reverse_offset = pair.thickness_angle1;
+    if (law->has_reverse_branch())
+      {
+        // A two-sided table carries its own clearance and reverse flank.
+        if (c.backlash >= 0 && std::abs(c.backlash - law->backlash()) > 1e-9)
+          throw InputError("Dynamics/Pair/Backlash", to_string_g(c.backlash * 1e6) + " um",
+                           "< 0 (from the table) or the table's " + to_string_g(law->backlash() * 1e6) + " um",
+                           "the mesh table is two-sided: its backlash and reverse flank are part of it");
+        contact.backlash = law->backlash();
+        note("backlash and reverse flank from the two-sided mesh table");
+      }
 
     const double r1 = c.module * c.z1 / 2, r2 = c.module * c.z2 / 2;
     auto cylinder = [&](double r) { return 0.5 * M_PI * c.density * c.face_width * std::pow(r, 4); };

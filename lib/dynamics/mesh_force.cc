@@ -104,14 +104,47 @@ namespace gearfem::dynamics
   }
 
   // ---------------------------------------------------------------- tables
+  namespace
+  {
+    const char *second_axis_name(MeshTable::Kind k)
+    {
+      return k == MeshTable::Kind::torque_vs_compression ? "delta" :
+             k == MeshTable::Kind::stiffness_vs_load     ? "load" :
+                                                          "torque";
+    }
+    const char *second_axis_unit(MeshTable::Kind k)
+    {
+      return k == MeshTable::Kind::torque_vs_compression ? "m" :
+             k == MeshTable::Kind::stiffness_vs_load     ? "N" :
+                                                          "N*m";
+    }
+    const char *value_axis_unit(MeshTable::Kind k)
+    {
+      return k == MeshTable::Kind::torque_vs_compression ? "N*m" :
+             k == MeshTable::Kind::stiffness_vs_load     ? "N/m" :
+                                                          "m";
+    }
+
+    /// Index of the node of `axis` at x (relative tolerance 1e-9 of the axis span); -1: none.
+    long node_at(const std::vector<double> &axis, double x)
+    {
+      const double tol = 1e-9 * (axis.back() - axis.front());
+      for (std::size_t j = 0; j < axis.size(); ++j)
+        if (std::abs(axis[j] - x) <= tol)
+          return long(j);
+      return -1;
+    }
+  } // namespace
+
   void MeshTable::check(const std::string &expected_hash) const
   {
     const bool torque = kind == Kind::torque_vs_compression;
+    const std::string sname = second_axis_name(kind);
     if (theta.size() < 2)
       throw InputError("mesh table/theta axis", std::to_string(theta.size()) + " nodes",
                        ">= 2 nodes", "missing or too short theta axis");
     if (second.size() < 2)
-      throw InputError(std::string("mesh table/") + (torque ? "delta" : "load") + " axis",
+      throw InputError("mesh table/" + sname + " axis",
                        std::to_string(second.size()) + " nodes", ">= 2 nodes",
                        "missing or too short second axis");
     if (values.size() != theta.size() * second.size())
@@ -119,17 +152,47 @@ namespace gearfem::dynamics
                        std::to_string(theta.size() * second.size()) + " (theta x second axis)");
     if (theta_unit != "rad")
       throw InputError("mesh table/theta unit", theta_unit, "rad");
-    if (second_unit != (torque ? "m" : "N"))
-      throw InputError("mesh table/second-axis unit", second_unit, torque ? "m" : "N");
-    if (value_unit != (torque ? "N*m" : "N/m"))
-      throw InputError("mesh table/value unit", value_unit, torque ? "N*m" : "N/m");
+    if (second_unit != second_axis_unit(kind))
+      throw InputError("mesh table/second-axis unit", second_unit, second_axis_unit(kind));
+    if (value_unit != value_axis_unit(kind))
+      throw InputError("mesh table/value unit", value_unit, value_axis_unit(kind));
     for (std::size_t i = 1; i < theta.size(); ++i)
       if (!(theta[i] > theta[i - 1]))
         throw InputError("mesh table/theta axis", "not strictly increasing", "increasing");
     for (std::size_t i = 1; i < second.size(); ++i)
       if (!(second[i] > second[i - 1]))
         throw InputError("mesh table/second axis", "not strictly increasing", "increasing");
-    if (second[0] < 0)
+    if (backlash >= 0 && !torque)
+      throw InputError("mesh table/backlash", to_string_g(backlash),
+                       "only torque tables T(theta, delta) are two-sided");
+    if (second[0] < 0 && !two_sided())
+      throw InputError("mesh table/" + sname + " axis", to_string_g(second[0]), ">= 0",
+                       "negative compressions need a two-sided table (backlash >= 0)");
+    if (two_sided())
+      {
+        const long j0 = node_at(second, 0.0), jb = node_at(second, -backlash);
+        if (!(second[0] < -backlash) || j0 < 0 || jb < 0 || j0 + 1 >= long(second.size()))
+          throw InputError("mesh table/delta axis",
+                           "[" + to_string_g(second.front()) + ", " + to_string_g(second.back()) + "] m",
+                           "nodes below -b, at -b = " + to_string_g(-backlash) + " m, at 0 and above 0",
+                           "a two-sided table covers the reverse flank, the gap and the drive flank");
+        double scale = 0;
+        for (double v : values)
+          scale = std::max(scale, std::abs(v));
+        for (std::size_t i = 0; i < theta.size(); ++i)
+          for (std::size_t j = 0; j < second.size(); ++j)
+            {
+              const double v = value(i, j);
+              const bool gap = long(j) >= jb && long(j) <= j0;
+              if ((gap && std::abs(v) > 1e-12 * scale) || (long(j) < jb && v > 1e-12 * scale) ||
+                  (long(j) > j0 && v < -1e-12 * scale))
+                throw InputError("mesh table/values", to_string_g(v) + " N*m at delta = " +
+                                                        to_string_g(second[j]) + " m",
+                                 gap ? "0 on [-b, 0] (loss of contact)" :
+                                       (long(j) < jb ? "<= 0 below -b (reverse flank)" : ">= 0 above 0"));
+            }
+      }
+    else if (second[0] < 0)
       throw InputError("mesh table/second axis", to_string_g(second[0]), ">= 0");
     if (!(period > 0) || theta.back() - theta.front() >= period)
       throw InputError("mesh table/period", to_string_g(period),
@@ -147,6 +210,16 @@ namespace gearfem::dynamics
 
   void MeshTable::require_covers_load(double F) const
   {
+    if (kind == Kind::ste_vs_torque)
+      {
+        const double T = F * base_radius;
+        if (T < second.front() || T > second.back())
+          throw InputError("mesh table/torque range", to_string_g(T) + " N*m",
+                           "[" + to_string_g(second.front()) + ", " + to_string_g(second.back()) +
+                             "] N*m",
+                           "the table does not cover the requested load");
+        return;
+      }
     if (kind == Kind::stiffness_vs_load)
       {
         if (F < second.front() || F > second.back())
@@ -166,11 +239,49 @@ namespace gearfem::dynamics
                        "the table does not cover the requested load");
   }
 
-  TableLaw::TableLaw(const MeshTable &t, ThetaInterpolation interpolation)
-    : interp_(interpolation)
-    , period_(t.period)
+  namespace
   {
-    t.check();
+    /// The drive part (delta >= 0) or the reverse part (delta_r = -delta - b >= 0, as
+    /// positive torques) of a two-sided torque table, as a one-sided table.
+    MeshTable one_side(const MeshTable &t, bool reverse)
+    {
+      MeshTable o = t;
+      o.backlash = -1;
+      o.second.clear();
+      o.values.clear();
+      const long j0 = node_at(t.second, 0.0), jb = node_at(t.second, -t.backlash);
+      std::vector<long> cols;
+      if (reverse)
+        for (long j = jb; j >= 0; --j)
+          cols.push_back(j);
+      else
+        for (long j = j0; j < long(t.second.size()); ++j)
+          cols.push_back(j);
+      for (long j : cols)
+        o.second.push_back(reverse ? std::max(0.0, -t.second[j] - t.backlash) : std::max(0.0, t.second[j]));
+      o.second.front() = 0.0;
+      for (std::size_t i = 0; i < t.theta.size(); ++i)
+        for (long j : cols)
+          o.values.push_back(reverse ? -t.value(i, j) : t.value(i, j));
+      return o;
+    }
+  } // namespace
+
+  TableLaw::TableLaw(const MeshTable &table, ThetaInterpolation interpolation)
+    : interp_(interpolation)
+    , period_(table.period)
+  {
+    table.check();
+    if (table.kind == MeshTable::Kind::ste_vs_torque)
+      throw InputError("mesh table/values", "transmission error STE(theta, T)",
+                       "a torque T(theta, delta) or stiffness k(theta, F) table",
+                       "an STE table is not a mesh-force law (use Law = STE)");
+    const MeshTable t = table.two_sided() ? one_side(table, false) : table;
+    if (table.two_sided())
+      {
+        backlash_ = table.backlash;
+        reverse_ = std::make_unique<TableLaw>(one_side(table, true), interpolation);
+      }
     nt_ = t.theta.size();
     theta0_ = t.theta.front();
     dtheta_ = t.period / nt_;
@@ -251,6 +362,8 @@ namespace gearfem::dynamics
     , nt_(o.nt_)
     , kbar_(o.kbar_)
     , out_(0)
+    , backlash_(o.backlash_)
+    , reverse_(o.reverse_ ? std::make_unique<TableLaw>(*o.reverse_) : nullptr)
   {}
 
   double TableLaw::interp_theta(std::size_t j, double theta) const

@@ -32,6 +32,15 @@ namespace gearfem::dynamics
     virtual double mean_stiffness() const = 0;
     /// Evaluations outside the law's validity range (tables); 0 for closed forms.
     virtual long out_of_range_count() const { return 0; }
+    /// True if the law carries its own reverse-flank (back contact) branch and backlash
+    /// (a two-sided mesh table); the contact logic then uses reverse_force() and backlash()
+    /// instead of mapping the drive law onto the coast flank.
+    virtual bool has_reverse_branch() const { return false; }
+    /// Force magnitude [N] on the coast flank at pinion roll angle theta [rad] (not mapped)
+    /// and coast compression delta_r = -delta - b >= 0 [m] (laws with a reverse branch).
+    virtual double reverse_force(double /*theta*/, double /*delta_r*/) const { return 0.0; }
+    /// Total clearance b along the line of action of a two-sided law [m]; < 0: none.
+    virtual double backlash() const { return -1.0; }
     virtual std::unique_ptr<MeshForceLaw> clone() const = 0;
   };
 
@@ -112,16 +121,25 @@ namespace gearfem::dynamics
     enum class Kind
     {
       torque_vs_compression, ///< values: T [N*m] on (theta [rad], delta [m])
-      stiffness_vs_load      ///< values: k [N/m] on (theta [rad], F [N])
+      stiffness_vs_load,     ///< values: k [N/m] on (theta [rad], F [N])
+      ste_vs_torque          ///< values: STE [m] on (theta [rad], T [N*m]) (not a force law)
     };
     Kind kind = Kind::torque_vs_compression;
     std::vector<double> theta;  ///< strictly increasing, within one mesh period [rad]
-    std::vector<double> second; ///< delta [m] or F [N], strictly increasing, >= 0
+    /// delta [m], F [N] or T [N*m], strictly increasing, >= 0; a two-sided torque table
+    /// (backlash >= 0) starts below -backlash.
+    std::vector<double> second;
     std::vector<double> values; ///< row-major: values[i * second.size() + j]
     double period = 0;          ///< mesh period in theta [rad] (table is periodic in theta)
     std::string theta_unit = "rad", second_unit = "m", value_unit = "N*m";
     std::string geometry_hash;  ///< hash of the GearPair the table was computed for
     double base_radius = 0;     ///< pinion base radius r_b1 [m] (T = F r_b1)
+    /// Two-sided torque tables only: the clearance b >= 0 along the line of action [m]. The
+    /// delta axis then runs from below -b to above 0 and has nodes at -b and 0; T = 0 on
+    /// [-b, 0] (loss of contact) and T <= 0 below -b (the reverse flank, delta_r = -delta - b).
+    /// < 0: a one-sided table (delta >= 0, the drive flank only).
+    double backlash = -1;
+    bool two_sided() const { return kind == Kind::torque_vs_compression && backlash >= 0; }
     /// Throws InputError for missing axes, wrong units, inconsistent sizes, non-monotone
     /// axes, and (if expected_hash is not empty) a geometry hash mismatch.
     void check(const std::string &expected_hash = "") const;
@@ -143,8 +161,15 @@ namespace gearfem::dynamics
   class TableLaw : public MeshForceLaw
   {
   public:
+    /// A two-sided torque table gives a law with a reverse branch (has_reverse_branch()).
     TableLaw(const MeshTable &table, ThetaInterpolation interpolation);
     TableLaw(const TableLaw &other);
+    bool has_reverse_branch() const override { return reverse_ != nullptr; }
+    double reverse_force(double theta, double delta_r) const override
+    {
+      return reverse_ ? reverse_->force(theta, delta_r, 0) : 0.0;
+    }
+    double backlash() const override { return backlash_; }
     std::string name() const override { return "table"; }
     double period() const override { return period_; }
     double force(double theta, double delta, int) const override;
@@ -154,7 +179,10 @@ namespace gearfem::dynamics
     /// Use mean_secant_stiffness(F) as the mean stiffness (damping, natural frequency);
     /// the default is the mean secant at the middle of the delta axis.
     void set_reference_load(double F) { kbar_ = mean_secant_stiffness(F); }
-    long out_of_range_count() const override { return out_.load(std::memory_order_relaxed); }
+    long out_of_range_count() const override
+    {
+      return out_.load(std::memory_order_relaxed) + (reverse_ ? reverse_->out_of_range_count() : 0);
+    }
     double delta_max() const { return d_.back(); }
     std::unique_ptr<MeshForceLaw> clone() const override
     {
@@ -171,6 +199,8 @@ namespace gearfem::dynamics
     std::size_t nt_ = 0;
     double kbar_ = 0;
     mutable std::atomic<long> out_{0};
+    double backlash_ = -1;                ///< two-sided tables: b [m]
+    std::unique_ptr<TableLaw> reverse_;   ///< two-sided tables: the coast-flank branch
   };
 
   /// STE excitation: F = kbar (delta - e(theta)), with e(theta) the static transmission

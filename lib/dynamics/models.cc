@@ -58,7 +58,9 @@ namespace gearfem::dynamics
     if (m.s == 1)
       return law_->force(theta, delta, m.zone.zone);
     if (m.s == -1)
-      return -law_->force(contact_.coast_theta(theta), -delta - contact_.backlash, m.zone.zone);
+      return law_->has_reverse_branch() ?
+               -law_->reverse_force(theta, -delta - contact_.backlash) :
+               -law_->force(contact_.coast_theta(theta), -delta - contact_.backlash, m.zone.zone);
     return 0.0;
   }
 

@@ -69,21 +69,24 @@ namespace gearfem::io
       void *data_ = nullptr;
     };
 
-    const char *second_name(MeshTable::Kind k)
+    using Kind = MeshTable::Kind;
+    const char *second_name(Kind k)
     {
-      return k == MeshTable::Kind::torque_vs_compression ? "delta" : "load";
+      return k == Kind::torque_vs_compression ? "delta" : k == Kind::stiffness_vs_load ? "load" : "torque";
     }
-    const char *second_unit(MeshTable::Kind k)
+    const char *second_unit(Kind k)
     {
-      return k == MeshTable::Kind::torque_vs_compression ? "m" : "N";
+      return k == Kind::torque_vs_compression ? "m" : k == Kind::stiffness_vs_load ? "N" : "N*m";
     }
-    const char *value_unit(MeshTable::Kind k)
+    const char *value_unit(Kind k)
     {
-      return k == MeshTable::Kind::torque_vs_compression ? "N*m" : "N/m";
+      return k == Kind::torque_vs_compression ? "N*m" : k == Kind::stiffness_vs_load ? "N/m" : "m";
     }
-    const char *quantity(MeshTable::Kind k)
+    const char *quantity(Kind k)
     {
-      return k == MeshTable::Kind::torque_vs_compression ? "torque" : "stiffness";
+      return k == Kind::torque_vs_compression ? "torque" :
+             k == Kind::stiffness_vs_load     ? "stiffness" :
+                                                "transmission error";
     }
 
     std::string utc_now()
@@ -356,7 +359,9 @@ namespace gearfem::io
                          "a writable path in an existing folder",
                          "cannot create " + tmp.path().string());
       w.string_attribute(f.get(), "format", mesh_table_format);
-      w.int_attribute(f.get(), "format_version", mesh_table_format_version);
+      // Version 1 whenever the file fits it, so that version-1 readers keep reading it.
+      const bool v1 = table.kind != Kind::ste_vs_torque && !table.two_sided();
+      w.int_attribute(f.get(), "format_version", v1 ? 1 : mesh_table_format_version);
       w.string_attribute(f.get(), "geometry_hash", table.geometry_hash);
       w.string_attribute(f.get(), "source", provenance.source);
       w.string_attribute(f.get(), "created",
@@ -367,6 +372,8 @@ namespace gearfem::io
             H5Gclose);
       w.double_attribute(g.get(), "period", table.period);
       w.double_attribute(g.get(), "base_radius", table.base_radius);
+      if (table.two_sided())
+        w.double_attribute(g.get(), "backlash", table.backlash);
       w.double_attribute(g.get(), "valid_min", table.second.front());
       w.double_attribute(g.get(), "valid_max", table.second.back());
       w.dataset(g.get(), "theta", {nt}, table.theta, "rad");
@@ -406,10 +413,10 @@ namespace gearfem::io
       r.fail("/", "format", format, mesh_table_format, "not a gearfem mesh table");
     const std::string known = std::to_string(mesh_table_format_version);
     const long long version = r.integer_attribute(f.get(), "/", "format_version", known);
-    if (version != mesh_table_format_version)
-      r.fail("/", "format_version", std::to_string(version), known,
-             "this gearfem reads mesh-table format version " + known +
-               " only (docs/mesh-tables.md)");
+    if (version < 1 || version > mesh_table_format_version)
+      r.fail("/", "format_version", std::to_string(version), "1.." + known,
+             "this gearfem reads mesh-table format versions 1 to " + known +
+               " (docs/mesh-tables.md)");
 
     MeshTable t;
     t.geometry_hash = r.string_attribute(f.get(), "/", "geometry_hash");
@@ -436,8 +443,11 @@ namespace gearfem::io
       t.kind = MeshTable::Kind::torque_vs_compression;
     else if (q == "stiffness")
       t.kind = MeshTable::Kind::stiffness_vs_load;
+    else if (q == "transmission error" && version >= 2)
+      t.kind = MeshTable::Kind::ste_vs_torque;
     else
-      r.fail(gp + "/values", "quantity", q.empty() ? "(empty)" : q, "{torque, stiffness}");
+      r.fail(gp + "/values", "quantity", q.empty() ? "(empty)" : q,
+             version >= 2 ? "{torque, stiffness, transmission error}" : "{torque, stiffness} (version 1)");
     const char *sn = second_name(t.kind);
     t.second = r.dataset(g.get(), gp, sn, 1, dims_s,
                          std::string("quantity = ") + q + " needs the second axis " + sn);
@@ -454,6 +464,17 @@ namespace gearfem::io
 
     t.period = r.double_attribute(g.get(), gp, "period", "rad");
     t.base_radius = r.double_attribute(g.get(), gp, "base_radius", "m");
+    // Version 2: a torque table whose delta axis starts below 0 is two-sided and must say
+    // its backlash.
+    if (t.kind == Kind::torque_vs_compression && !t.second.empty() && t.second.front() < 0)
+      {
+        if (version < 2)
+          r.fail(gp + "/delta", "", to_string_g(t.second.front()) + " m", ">= 0 in format version 1",
+                 "negative compressions (two-sided tables) need format version 2");
+        t.backlash = r.double_attribute(g.get(), gp, "backlash", "m");
+        if (!(t.backlash >= 0))
+          r.fail(gp, "backlash", to_string_g(t.backlash), ">= 0 m");
+      }
     inf.valid_min = r.double_attribute(g.get(), gp, "valid_min", second_unit(t.kind));
     inf.valid_max = r.double_attribute(g.get(), gp, "valid_max", second_unit(t.kind));
     if (!(inf.valid_min <= inf.valid_max))

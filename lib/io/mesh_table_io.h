@@ -1,18 +1,22 @@
 #pragma once
 // HDF5 mesh-table files: the versioned contract between the FE calibration (which writes
-// T(theta, delta) or k(theta, F) tables) and the dynamics module (which reads them into a
-// dynamics::MeshTable for TableLaw). Layout, format version 1 (see docs/mesh-tables.md):
+// T(theta, delta), k(theta, F) and STE(theta, T) tables) and the dynamics module (which reads
+// them into a dynamics::MeshTable for TableLaw). Layout (see docs/mesh-tables.md):
 //
 //   /                         attributes: format = "gearfem-mesh-table" (string)
-//                                         format_version = 1 (integer)
+//                                         format_version = 1 or 2 (integer)
 //                                         geometry_hash, source, created (strings)
 //   /table                    group, attributes: period [rad], base_radius [m],
-//                                                valid_min, valid_max (second axis, its unit)
+//                                                valid_min, valid_max (second axis, its unit),
+//                                                backlash [m] (version 2, two-sided torque tables)
 //   /table/theta              float64 [n_theta], attribute unit = "rad"
-//   /table/delta              float64 [n_second], unit = "m"   (torque tables), or
-//   /table/load               float64 [n_second], unit = "N"   (stiffness tables)
+//   /table/delta              float64 [n_second], unit = "m"   (torque tables; version 2:
+//                                                              may start below -backlash)
+//   /table/load               float64 [n_second], unit = "N"   (stiffness tables), or
+//   /table/torque             float64 [n_second], unit = "N*m" (STE tables, version 2)
 //   /table/values             float64 [n_theta][n_second] (row-major, theta slowest),
-//                             attributes unit = "N*m" | "N/m", quantity = "torque" | "stiffness"
+//                             attributes unit = "N*m" | "N/m" | "m",
+//                             quantity = "torque" | "stiffness" | "transmission error"
 //
 // All numbers are stored as IEEE float64, so a round trip is bit-exact. Strings are
 // variable-length UTF-8 (h5py reads them as str); fixed-length strings are also accepted.
@@ -26,9 +30,12 @@ namespace gearfem::io
 {
   /// Value of the root attribute `format`.
   inline constexpr const char *mesh_table_format = "gearfem-mesh-table";
-  /// Value of the root attribute `format_version` written (and the only one read).
-  /// Bumped on every incompatible change of the layout (docs/mesh-tables.md).
-  inline constexpr int mesh_table_format_version = 1;
+  /// The newest value of the root attribute `format_version`; the reader accepts 1 to this.
+  /// Bumped on every incompatible change of the layout (docs/mesh-tables.md). Version 2
+  /// adds two-sided torque tables (negative delta, attribute /table@backlash) and
+  /// transmission-error tables STE(theta, T); files that need neither are still written as
+  /// version 1.
+  inline constexpr int mesh_table_format_version = 2;
 
   /// Where a table came from.
   struct TableProvenance

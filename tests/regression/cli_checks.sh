@@ -99,6 +99,16 @@ case $mode in
     expect=$(awk -v s="$static" 'BEGIN { printf "%.12g", s * (1 / 0.9 - 1 / 1.1) }')
     echo "ripple table: peak-to-peak DTE $ptp um (quasi-static closed form $expect)"
     near "$ptp" "$expect" "$(awk -v s="$expect" 'BEGIN { print 0.01 * s }')" || fail "peak-to-peak $ptp vs $expect"
+    # A two-sided table (format version 2) brings its backlash and reverse flank: the static
+    # answer is the same, and the run says where the backlash comes from.
+    /usr/bin/python3 "$src/write_mesh_table.py" "$work/two_sided.h5" two_sided || fail "writing the two-sided table"
+    case_file two two_sided "" 50 200
+    "$gearfem" dynamics "$work/two.prm" --output-dir "$work/t" > "$work/log" 2>&1 || { cat "$work/log"; fail "two-sided table run"; }
+    grep -q "backlash and reverse flank from the two-sided mesh table" "$work/log" || { cat "$work/log"; fail "two-sided table not recognised"; }
+    grep -q "backlash = 100 um" "$work/log" || fail "two-sided table backlash not used"
+    read -r mean ptp <<< "$(stats "$work/t")"
+    near "$mean" "$static" "$(awk -v s="$static" 'BEGIN { print 1e-6 * s }')" || fail "two-sided: mean DTE $mean vs $static"
+    echo "two-sided table: mean DTE $mean um, backlash 100 um from the file"
     # refused: name.prm table hash z1 torque, and the words the message must contain
     check_refused() {
       case_file "$1" "$2" "$3" "$4" "$5"

@@ -392,3 +392,31 @@ TEST(Calibration, CornerContactIsContinuousAtTheEndsOfThePath)
           }
     }
 }
+
+// Two-sided torque (mesh-table format version 2): the reverse-flank offset of a standard
+// zero-backlash 50/50 pair is the angular tooth thickness at the pitch circle, pi/z (closed
+// form of the rack-cut tooth: half the angular pitch), thinned by b/(2 r_b1); the torque is
+// 0 across the clearance and, below -b, minus the drive torque at the mirrored angle.
+TEST(Calibration, TwoSidedTorqueMirrorsTheDriveFlank)
+{
+  const geometry::GearPair gp = pair(50, 50, 3e-3);
+  const InvoluteTooth t1 = involute_tooth(gp.gear(1));
+  PairCompliance pc(t1, involute_tooth(gp.gear(2)), {207e9, 0.3}, {207e9, 0.3}, 20e-3, pair_line(gp));
+  const PairLine &L = pc.line();
+  EXPECT_NEAR(reverse_offset(t1, L, 0.0), M_PI / 50, 1e-7);
+  const double b = 1.5e-4;
+  EXPECT_NEAR(reverse_offset(t1, L, b), M_PI / 50 - b / (2 * L.rb1), 1e-7);
+  const CalibratedMesh m(pc, CalibrationFactors{});
+  const double psi = reverse_offset(t1, L, b);
+  for (const double phi : {-0.05, 0.0, 0.013, 0.04})
+    {
+      const double d = 5e-6;
+      EXPECT_NEAR(m.torque(phi, d, b, psi), L.rb1 * m.load_at(phi, d), 1e-9 * L.rb1 * m.load_at(phi, d));
+      EXPECT_EQ(m.torque(phi, 0.0, b, psi), 0.0);
+      EXPECT_EQ(m.torque(phi, -0.5 * b, b, psi), 0.0);
+      EXPECT_EQ(m.torque(phi, -b, b, psi), 0.0);
+      const double rev = m.torque(phi, -b - d, b, psi), fwd = m.torque(psi - phi, d, b, psi);
+      EXPECT_GT(fwd, 0.0);
+      EXPECT_NEAR(rev, -fwd, 1e-12 * fwd);
+    }
+}

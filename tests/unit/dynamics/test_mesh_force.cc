@@ -194,6 +194,46 @@ TEST(MeshForce, ContactStatesAndReverseFlank)
   EXPECT_EQ(m.contact_state(0, x), -1);
 }
 
+// A two-sided table (format version 2) carries its own reverse branch: back contact
+// evaluates it at the unmapped theta with delta_r = -delta - b (no coast mapping), the gap
+// gives 0, and the reverse branch equals the closed form the table was filled with.
+TEST(MeshForce, TwoSidedTableReverseBranch)
+{
+  const double b = 5e-5, rb = 0.04, kd = 3e8, kr = 2e8;
+  MeshTable t;
+  t.period = 2 * M_PI / 20, t.base_radius = rb, t.backlash = b;
+  for (int i = 0; i < 16; ++i)
+    t.theta.push_back(-0.1 + t.period * i / 16);
+  const std::vector<double> d = {0, 1e-5, 2e-5, 4e-5};
+  for (auto it = d.rbegin(); it != d.rend(); ++it)
+    t.second.push_back(-b - *it);
+  for (double x : d)
+    t.second.push_back(x);
+  for (std::size_t i = 0; i < t.theta.size(); ++i)
+    for (double x : t.second)
+      t.values.push_back(x > 0 ? rb * kd * (1 + 0.2 * std::sin(20 * t.theta[i])) * x : x < -b ? -rb * kr * (-x - b) : 0.0);
+  auto law = std::make_unique<TableLaw>(t, ThetaInterpolation::linear);
+  ASSERT_TRUE(law->has_reverse_branch());
+  ContactLogic c;
+  c.backlash = law->backlash();
+  c.reverse_mapping = true; // ignored for a law with its own reverse branch
+  c.reverse_offset = 0.3;
+  DteModel::Parameters p;
+  p.mass = 1, p.static_force = 0, p.zeta = 0;
+  DteModel m(std::move(law), c, p);
+  MeshMode back;
+  back.s = -1;
+  const double th = t.theta[5];
+  EXPECT_NEAR(m.elastic_force(th, -b - 3e-5, back), -kr * 3e-5, 1e-9 * kr * 3e-5);
+  MeshMode gap;
+  gap.s = 0;
+  EXPECT_EQ(m.elastic_force(th, -0.5 * b, gap), 0.0);
+  MeshMode drive;
+  drive.s = 1;
+  EXPECT_NEAR(m.elastic_force(th, 1.5e-5, drive), kd * (1 + 0.2 * std::sin(20 * th)) * 1.5e-5,
+              1e-6 * kd * 1.5e-5);
+}
+
 // STE excitation: the fluctuation has zero mean and is interpolated periodically.
 TEST(MeshForce, SteExcitation)
 {

@@ -360,9 +360,9 @@ TEST_F(MeshTableIo, WrongFormatOrVersion)
 {
   const fs::path file = dir_ / "bad.h5";
   Spec s;
-  s.version = 2;
+  s.version = 3;
   write_raw(file, torque_table(), s);
-  expect_input_error(file, {"'format_version'", "2"});
+  expect_input_error(file, {"'format_version'", "3"});
   s = {};
   s.version_as_string = true;
   write_raw(file, torque_table(), s);
@@ -435,4 +435,99 @@ TEST_F(MeshTableIo, FailedWriteKeepsOldFile)
   write_mesh_table(file, stiffness_table(), {"third", ""});
   expect_same(stiffness_table(), read_mesh_table(file, "", &info));
   EXPECT_EQ(info.provenance.source, "third");
+}
+
+namespace
+{
+  /// Two-sided torque table (version 2): T = r_b k delta above 0, 0 on [-b, 0], and the
+  /// reverse flank -r_b k_r (-delta - b) below -b, with k_r != k so that the branches differ.
+  MeshTable two_sided_table(double b)
+  {
+    MeshTable t = torque_table();
+    t.backlash = b;
+    const std::vector<double> drive = t.second; // 0 .. delta_max
+    t.second.clear();
+    for (auto it = drive.rbegin(); it != drive.rend(); ++it)
+      t.second.push_back(-b - *it);
+    t.second.push_back(0.0);
+    t.second.insert(t.second.end(), drive.begin() + 1, drive.end());
+    t.values.clear();
+    for (std::size_t i = 0; i < t.theta.size(); ++i)
+      for (double d : t.second)
+        t.values.push_back(d > 0 ? t.base_radius * 3e8 * (1 + 0.1 * std::cos(32 * t.theta[i])) * d :
+                           d < -b ? -t.base_radius * 2e8 * (-d - b) : 0.0);
+    return t;
+  }
+} // namespace
+
+// Version 2: a two-sided torque table keeps its backlash and every number; TableLaw splits
+// it into the drive branch and the reverse branch (forces from the closed form above), and
+// a one-sided table is still written as version 1.
+TEST_F(MeshTableIo, TwoSidedTableIsVersion2)
+{
+  const double b = 1.0e-4 / 3.0;
+  const MeshTable t = two_sided_table(b);
+  const fs::path file = dir_ / "two.h5";
+  write_mesh_table(file, t, {"test", ""});
+  MeshTableFileInfo info;
+  const MeshTable r = read_mesh_table(file, t.geometry_hash, &info);
+  expect_same(t, r);
+  EXPECT_EQ(info.format_version, 2);
+  EXPECT_EQ(r.backlash, b);
+  const TableLaw law(r, ThetaInterpolation::linear);
+  ASSERT_TRUE(law.has_reverse_branch());
+  EXPECT_EQ(law.backlash(), b);
+  const double th = r.theta[3], dr = 2e-6; // on a theta node: interpolation in delta only (linear)
+  EXPECT_NEAR(law.reverse_force(th, dr), 2e8 * dr, 1e-9 * 2e8 * dr);
+  EXPECT_NEAR(law.force(th, dr, 0), 3e8 * (1 + 0.1 * std::cos(32 * th)) * dr, 1e-9 * 3e8 * dr);
+  const fs::path one = dir_ / "one.h5";
+  write_mesh_table(one, torque_table(), {"test", ""});
+  read_mesh_table(one, "", &info);
+  EXPECT_EQ(info.format_version, 1);
+}
+
+// Bad two-sided tables: a torque in the gap, a positive torque on the reverse side, no node
+// at -b, negative delta without a backlash, and negative delta in a version-1 file.
+TEST_F(MeshTableIo, BadTwoSidedTables)
+{
+  const double b = 2e-5;
+  MeshTable t = two_sided_table(b);
+  const std::size_t ns = t.second.size(), jgap = ns / 2 - 1; // the node at -b
+  t.values[jgap] = 1.0;
+  EXPECT_THROW(t.check(), InputError);
+  t = two_sided_table(b);
+  t.values[0] = 5.0;
+  EXPECT_THROW(t.check(), InputError);
+  t = two_sided_table(b);
+  t.backlash = 0.5 * b;
+  EXPECT_THROW(t.check(), InputError);
+  t = two_sided_table(b);
+  t.backlash = -1;
+  EXPECT_THROW(t.check(), InputError);
+  const fs::path file = dir_ / "v1.h5";
+  Spec s;
+  s.version = 1;
+  MeshTable neg = torque_table();
+  for (double &d : neg.second)
+    d -= 1e-6;
+  write_raw(file, neg, s);
+  expect_input_error(file, {"/table/delta", "format version 1"});
+}
+
+// Version 2: the transmission-error table STE(theta, T) of gearfem calibrate round-trips
+// and is refused as a mesh-force law.
+TEST_F(MeshTableIo, SteTable)
+{
+  MeshTable t = stiffness_table();
+  t.kind = MeshTable::Kind::ste_vs_torque;
+  t.second_unit = "N*m", t.value_unit = "m";
+  for (double &v : t.values)
+    v = 1e-6 / v * 1e9;
+  const fs::path file = dir_ / "ste.h5";
+  write_mesh_table(file, t, {"test", ""});
+  MeshTableFileInfo info;
+  const MeshTable r = read_mesh_table(file, t.geometry_hash, &info);
+  expect_same(t, r);
+  EXPECT_EQ(info.format_version, 2);
+  EXPECT_THROW(TableLaw(r, ThetaInterpolation::linear), InputError);
 }
