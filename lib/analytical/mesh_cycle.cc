@@ -3,7 +3,9 @@
 #include "base/errors.h"
 
 #include <algorithm>
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace gearfem::analytical
 {
@@ -46,6 +48,62 @@ namespace gearfem::analytical
     return g;
   }
 
+  namespace
+  {
+    /// The pairs that carry load at compression x with corner contact (load_at_compression):
+    /// their positions g and loads along the line of action k_i F_i [N].
+    double corner_pairs(const MeshModel &m, double phi, double x, std::vector<double> *gs,
+                        std::vector<double> *loads)
+    {
+      const double g0 = m.g_C + m.rb1 * phi, lo = m.g_A - m.base_pitch, hi = m.g_E + m.base_pitch;
+      double F = 0.0;
+      for (double g = g0 + std::ceil((lo - g0) / m.base_pitch) * m.base_pitch; g < hi; g += m.base_pitch)
+        {
+          const CornerContact c = (g >= m.g_A && g <= m.g_E) ? CornerContact{0.0, 1.0} : m.corner(g);
+          if (!(x > c.gap))
+            continue;
+          const double f = c.arm * pair_load_at(m, std::clamp(g, m.g_A, m.g_E), c.arm * (x - c.gap));
+          F += f;
+          if (gs)
+            gs->push_back(g), loads->push_back(f);
+        }
+      return F;
+    }
+
+    /// Load sharing with corner contact: the compression x at which the pairs on the path
+    /// and in corner contact carry `load` (secant iterations on the monotone
+    /// load_at_compression, started from the path-only solution).
+    MeshState solve_with_corners(const MeshModel &m, double phi, double load, const MeshState &path)
+    {
+      double x0 = path.deflection, f0 = corner_pairs(m, phi, x0, nullptr, nullptr) - load;
+      double x1 = f0 > 0 ? 0.9 * x0 : x0, f1 = f0;
+      if (f0 > 0)
+        f1 = corner_pairs(m, phi, x1, nullptr, nullptr) - load;
+      int it = 0;
+      for (; it < 100 && std::abs(f1) > 1e-12 * load; ++it)
+        {
+          double x2 = f1 != f0 ? x1 - f1 * (x1 - x0) / (f1 - f0) : 0.5 * x1;
+          if (!(x2 > 0) || !std::isfinite(x2))
+            x2 = 0.5 * x1;
+          x0 = x1, f0 = f1, x1 = x2;
+          f1 = corner_pairs(m, phi, x1, nullptr, nullptr) - load;
+        }
+      if (std::abs(f1) > 1e-9 * load)
+        throw SolverError("mesh position with corner contact: no convergence at roll angle " +
+                          to_string_g(phi) + " rad");
+      MeshState s;
+      s.roll_angle = phi, s.load = load, s.deflection = x1, s.iterations = path.iterations + it;
+      corner_pairs(m, phi, x1, &s.g, &s.pair_load);
+      const double sum = std::accumulate(s.pair_load.begin(), s.pair_load.end(), 0.0);
+      for (double &f : s.pair_load) // remove the 1e-12 residual: the loads sum to `load`
+        f *= load / sum;
+      for (double f : s.pair_load)
+        s.pair_stiffness.push_back(f / x1);
+      s.stiffness = load / x1;
+      return s;
+    }
+  } // namespace
+
   MeshState solve_mesh_position(const MeshModel &m, double phi, double load)
   {
     require_greater("mesh load", load, 0.0, "N");
@@ -80,7 +138,7 @@ namespace gearfem::analytical
             s.stiffness = ksum;
             if (!std::isfinite(s.deflection) || !(s.deflection > 0.0))
               throw SolverError("mesh position: non-positive deflection at roll angle " + to_string_g(phi));
-            return s;
+            return m.corner ? solve_with_corners(m, phi, load, s) : s;
           }
       }
     throw SolverError("mesh position: Hertz load iteration did not converge at roll angle " +
@@ -114,15 +172,7 @@ namespace gearfem::analytical
       }
     check(m);
     // Every pair within one base pitch beyond A and E (each once).
-    const double g0 = m.g_C + m.rb1 * phi, lo = m.g_A - m.base_pitch, hi = m.g_E + m.base_pitch;
-    double F = 0.0;
-    for (double g = g0 + std::ceil((lo - g0) / m.base_pitch) * m.base_pitch; g < hi; g += m.base_pitch)
-      {
-        const CornerContact c = (g >= m.g_A && g <= m.g_E) ? CornerContact{0.0, 1.0} : m.corner(g);
-        if (x > c.gap)
-          F += c.arm * pair_load_at(m, std::clamp(g, m.g_A, m.g_E), c.arm * (x - c.gap));
-      }
-    return F;
+    return corner_pairs(m, phi, x, nullptr, nullptr);
   }
 
   std::vector<std::vector<double>> torque_table(const MeshModel &m, const std::vector<double> &phis,

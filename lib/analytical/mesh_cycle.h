@@ -21,8 +21,9 @@ namespace gearfem::analytical
     std::function<double(double g, double F)> pair_compliance;
     /// Optional corner contact (seed 000 OA/BΓ, corner.h): the rigid gap [m] and lever arm of
     /// a pair at g outside [g_A, g_E], in compression units with the gear held and the pinion
-    /// turned. Empty (the default): only the pairs on A..E carry load. Used by
-    /// load_at_compression and torque_table; solve_mesh_position and mesh_cycle ignore it.
+    /// turned. Empty (the default): only the pairs on A..E carry load. With it,
+    /// solve_mesh_position and mesh_cycle also count the corner pairs (the inverse of
+    /// load_at_compression), and so do load_at_compression and torque_table.
     std::function<CornerContact(double g)> corner;
   };
 
@@ -44,6 +45,10 @@ namespace gearfem::analytical
 
   /// Equal deflection of all pairs in contact under total normal load F > 0, with the
   /// load-dependent pair compliances updated by fixed-point iteration to rel. tol 1e-12.
+  /// With m.corner set, the pairs in corner contact (gap closed by the deflection) share the
+  /// load too: the deflection x solves load_at_compression(x) = F (secant, rel. 1e-12);
+  /// g and pair_load then list every loaded pair, corner pairs with their g outside A..E
+  /// and their load along the line of action.
   /// Throws SolverError when no pair is in contact or the iteration does not converge.
   MeshState solve_mesh_position(const MeshModel &m, double roll_angle, double load);
 

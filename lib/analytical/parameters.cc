@@ -107,6 +107,10 @@ namespace gearfem::analytical
     prm.declare_entry("Bore diameter 2", "0", Double(0), "The same for gear 2. Units: mm.");
     prm.declare_entry("Mesh positions", "200", Integer(2, 100000),
                       "Positions over one angular pitch for the mesh-cycle output. Units: none.");
+    prm.declare_entry("Corner contact", "true", dealii::Patterns::Bool(),
+                      "Mesh cycle with the corner contacts OA/BG of seed 000: outside A..E a pair "
+                      "carries load once the deflection closes the rigid gap of its tip corner "
+                      "(the single-pair zone narrows with load). Units: none.");
     prm.leave_subsection();
   }
 
@@ -120,6 +124,7 @@ namespace gearfem::analytical
     a.bore_radius1 = 0.5e-3 * prm.get_double("Bore diameter 1");
     a.bore_radius2 = 0.5e-3 * prm.get_double("Bore diameter 2");
     a.positions = prm.get_integer("Mesh positions");
+    a.corner_contact = prm.get_bool("Corner contact");
     prm.leave_subsection();
     if (a.options.model == StiffnessModel::potential_energy && (a.bore_radius1 <= 0 || a.bore_radius2 <= 0))
       throw InputError("Analytical/Bore diameter 1, 2", "0 mm", "> 0 mm",

@@ -24,6 +24,7 @@ namespace gearfem::analytical
     PairModelOptions options;
     double bore_radius1 = 0.0, bore_radius2 = 0.0; ///< [m] (Sainsot foundation; 0 = unset)
     int positions = 200;                            ///< mesh positions over one pitch
+    bool corner_contact = true; ///< mesh cycle with the corner contacts OA/BΓ (corner.h)
   };
   void declare_analytical_parameters(dealii::ParameterHandler &prm);
   AnalyticalInput parse_analytical_parameters(dealii::ParameterHandler &prm);

@@ -61,7 +61,7 @@ namespace gearfem::commands
                                   {pm.gear1.youngs_modulus, pm.gear1.poisson_ratio},
                                   {pm.gear2.youngs_modulus, pm.gear2.poisson_ratio},
                                   std::min(gi.gear1.face_width, gi.gear2.face_width), an::pair_line(pair), o);
-      const an::MeshModel mm = pc.mesh_model();
+      const an::MeshModel mm = pc.mesh_model(ai.corner_contact);
       Table t;
       t.add_column("pinion torque", "N m");
       t.add_column("roll angle", "deg");
@@ -69,7 +69,7 @@ namespace gearfem::commands
       t.add_column("loaded STE", "um");
       t.add_column("mesh stiffness", "N/um");
       for (int j = 1; j <= 3; ++j)
-        t.add_column("load pair " + std::to_string(j), "N");
+        t.add_column("load pair " + std::to_string(j), "N"); // in the order of g: A side first
       for (double T : ri.torques)
         {
           const auto cycle = an::mesh_cycle(mm, T / pair.base_radius(1), ai.positions);

@@ -420,3 +420,40 @@ TEST(Calibration, TwoSidedTorqueMirrorsTheDriveFlank)
       EXPECT_NEAR(rev, -fwd, 1e-12 * fwd);
     }
 }
+
+// Load-given mesh cycle with corner contact (the inverse of load_at_compression): at each
+// position the deflection x carries exactly the load (conservation), the pair loads sum to
+// it, positions where no corner pair engages give the path-only answer, and the single-pair
+// zone narrows as the load grows (seed 000; the FE shows the same, docs/contact.md).
+TEST(MeshCycle, CornerContactInTheLoadGivenSolver)
+{
+  const geometry::GearPair gp = pair(50, 50, 3e-3);
+  PairCompliance pc(involute_tooth(gp.gear(1)), involute_tooth(gp.gear(2)), {207e9, 0.3}, {207e9, 0.3}, 20e-3,
+                    pair_line(gp));
+  const MeshModel plain = pc.mesh_model(false), corner = pc.mesh_model(true);
+  std::vector<int> single;
+  for (const double T : {20.0, 200.0, 2000.0})
+    {
+      const double F = T / plain.rb1;
+      const auto c0 = mesh_cycle(plain, F, 200), c1 = mesh_cycle(corner, F, 200);
+      int n1 = 0;
+      for (std::size_t i = 0; i < c1.size(); ++i)
+        {
+          const MeshState &s = c1[i];
+          EXPECT_NEAR(load_at_compression(corner, s.roll_angle, s.deflection) / F, 1.0, 1e-9);
+          double sum = 0;
+          for (double f : s.pair_load)
+            sum += f;
+          EXPECT_NEAR(sum / F, 1.0, 1e-12);
+          EXPECT_LE(s.deflection, c0[i].deflection * (1 + 1e-9)); // extra load paths only stiffen
+          if (s.g.size() == c0[i].g.size())
+            EXPECT_NEAR(s.deflection / c0[i].deflection, 1.0, 1e-9);
+          n1 += s.g.size() == 1;
+        }
+      single.push_back(n1);
+    }
+  std::printf("single-pair positions of 200 at 20/200/2000 N m with corner contact: %d/%d/%d\n", single[0],
+              single[1], single[2]);
+  EXPECT_GT(single[0], single[1]);
+  EXPECT_GT(single[1], single[2]);
+}
