@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Plots of a `gearfem dynamics` run: sweep.png, spectrum.png, phase.png.
+"""Plots of a `gearfem dynamics` run: sweep.png, spectrum.png, phase.png, portraits.png.
 
 Usage: /usr/bin/python3 scripts/plot_dynamics.py <output folder> [title]
-Reads response.csv, poincare.csv, spectrum.csv and sweep.csv (those that exist). Every
+Reads response.csv, poincare.csv, spectrum.csv, sweep.csv and portrait_<k>_response.csv /
+portrait_<k>_poincare.csv (those that exist). Every
 PNG is written to a temporary name in the same folder and renamed into place.
 """
 import csv
@@ -87,6 +88,34 @@ def main():
         a2.set_title(title + ": time response")
         a2.grid(True, alpha=0.3)
         save(fig, os.path.join(d, "phase.png"))
+    portraits = []
+    k = 1
+    while os.path.exists(os.path.join(d, f"portrait_{k}_response.csv")):
+        portraits.append(k)
+        k += 1
+    if portraits:
+        n = len(portraits)
+        cols = min(n, 3)
+        rows = (n + cols - 1) // cols
+        fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.6 * rows), squeeze=False)
+        for ax, k in zip(axes.flat, portraits):
+            h, c = read(os.path.join(d, f"portrait_{k}_response.csv"))
+            ks = "[rad]" in h[1]
+            # speed from the nominal mesh position: deg/s -> rpm, or Omega (dimensionless)
+            speed = c[1][-1] / c[0][-1] if c[0][-1] else 0.0
+            label = f"Omega = {speed:.4g}" if ks else f"{speed / 6:.4g} rpm"
+            ax.plot(c[2], c[3], "-", lw=0.6)
+            hp, cp = read(os.path.join(d, f"portrait_{k}_poincare.csv"))
+            m = len(cp[0])
+            ax.plot(cp[1][max(0, m - 32):], cp[2][max(0, m - 32):], "r.", ms=6)
+            ax.set_title(f"{title}: {label}", fontsize=9)
+            ax.set_xlabel(h[2])
+            ax.set_ylabel(h[3])
+            ax.grid(True, alpha=0.3)
+        for ax in list(axes.flat)[n:]:
+            ax.axis("off")
+        fig.tight_layout()
+        save(fig, os.path.join(d, "portraits.png"))
 
 
 if __name__ == "__main__":

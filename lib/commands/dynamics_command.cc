@@ -348,6 +348,34 @@ namespace gearfem::commands
                   << r.transient_periods << " periods\n";
           out << summary.str();
         }
+      for (std::size_t k = 0; k < c.portrait_speeds.size(); ++k)
+        {
+          // Phase portrait, Poincare section and spectrum at a chosen speed, from the static
+          // state (the branch reached from rest; a sweep shows the others).
+          dyn::ResponseOptions ro = c.response;
+          ro.keep_history = true;
+          auto m = model->clone();
+          m->set_pinion_speed(c.portrait_speeds[k]);
+          dyn::State x = m->initial_state();
+          double t = 0;
+          const dyn::Response r = dyn::run_response(*m, c.integrator, ro, x, t);
+          const std::string name = "portrait_" + std::to_string(k + 1);
+          for (const auto &nt : response_tables(r, *m, u))
+            {
+              nt.second.write_csv(ctx.output_dir / (name + "_" + nt.first + ".csv"));
+              h5_tables.emplace_back(name + "_" + nt.first, nt.second);
+            }
+          clamps += r.out_of_range;
+          summary << name << ": " << (u.ks ? "Omega" : "pinion speed") << " [" << u.speed_unit
+                  << "] = " << r.pinion_speed * u.speed_scale << ", RMS DTE [" << u.d_unit
+                  << "] = " << r.rms * u.d_scale << ", K_v [-] = " << r.dynamic_factor
+                  << ", contact loss fraction [-] = " << r.contact_loss_fraction
+                  << ", back contact fraction [-] = " << r.back_contact_fraction
+                  << ", period [mesh periods] = " << r.period_multiplicity << "\n";
+          out << name << " at " << r.pinion_speed * u.speed_scale << " " << u.speed_unit
+              << ": RMS DTE " << r.rms * u.d_scale << " " << u.d_unit << ", contact loss fraction "
+              << r.contact_loss_fraction << ", period " << r.period_multiplicity << "\n";
+        }
       if (c.run_sweep)
         {
           const auto pts = dyn::sweep_up_down(*model, c.integrator, c.response, c.sweep_min,
@@ -379,7 +407,8 @@ namespace gearfem::commands
       "contact loss and back contact; RK4 / DOPRI5 / SDIRK3 with event location.\n"
       "Writes response.h5 (groups response, poincare, spectrum, sweep), the same tables as\n"
       "response.csv, poincare.csv, spectrum.csv, sweep.csv, summary.txt and sweep.png,\n"
-      "spectrum.png, phase.png.\n\n"
+      "spectrum.png, phase.png; with Analysis/Portrait speeds also portrait_<k>_{response,\n"
+      "poincare,spectrum}.csv and portraits.png (phase portraits and Poincare sections).\n\n"
       "Sample runs:\n"
       "  gearfem dynamics inputs/dynamics_kahraman_singh.prm\n"
       "  gearfem dynamics inputs/dynamics_seed004.prm";

@@ -80,6 +80,7 @@ namespace gearfem::dynamics
     double sweep_min = 100, sweep_max = 1000; ///< pinion speeds [rad/s] (Omega in KS mode)
     int sweep_points = 50;
     int threads = 2;
+    std::vector<double> portrait_speeds; ///< extra responses [rad/s] (Omega in KS mode)
 
     /// Throws InputError for inconsistent settings (speed range, tolerances, ...).
     void check() const;

@@ -193,6 +193,10 @@ namespace gearfem::dynamics
     prm.declare_entry("Sweep maximum speed", "10000", Double(), "Units: rpm (Omega [-] in KS mode).");
     prm.declare_entry("Number of speeds", "100", Integer(), "Per direction [-].");
     prm.declare_entry("Threads", "2", Integer(), "Threads for the up/down sweeps [-].");
+    prm.declare_entry("Portrait speeds", "", List(Double(0)),
+                      "Extra time responses at these pinion speeds, each from the static state: "
+                      "phase portrait, Poincare section and spectrum per speed (portrait_<k>_*.csv, "
+                      "portraits.png). Units: rpm (Omega [-] in Kahraman-Singh mode).");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -329,6 +333,12 @@ namespace gearfem::dynamics
     c.sweep_max = prm.get_double("Sweep maximum speed") * f;
     c.sweep_points = prm.get_integer("Number of speeds");
     c.threads = prm.get_integer("Threads");
+    for (const double w : doubles(prm.get("Portrait speeds")))
+      {
+        if (!(w > 0))
+          throw InputError("Dynamics/Analysis/Portrait speeds", to_string_g(w), "> 0");
+        c.portrait_speeds.push_back(w * f);
+      }
     prm.leave_subsection();
     prm.leave_subsection();
     c.check();
