@@ -6,6 +6,7 @@
 #   cli_checks.sh validate GEARFEM SRC_DIR    every inputs/*.prm passes --validate
 #   cli_checks.sh basics   GEARFEM SRC_DIR    --help, --version, unknown command, missing file
 #   cli_checks.sh tablefile GEARFEM SRC_DIR   dynamics with HDF5 mesh tables written by h5py
+#   cli_checks.sh seed001  GEARFEM SRC_DIR    gearfem rate reproduces seed 001's AGMA tables
 set -uo pipefail
 mode=$1 gearfem=$2 arg=$3
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -126,6 +127,19 @@ case $mode in
     check_refused teeth constant "" 40 200 "another number of teeth"
     check_refused load constant "" 50 20000 "does not cover"
     check_refused missing nosuchfile "" 50 200 "an existing HDF5"
+    ;;
+  seed001)
+    # Seed 001 (Siasos 2010) tables 6.2-1..3, 23/69 m 4, with the thesis' K_H = 1.1546: all
+    # twelve AGMA stresses within 1 % (issue 5: "gearfem rate reproduces the seed 001 tables").
+    "$gearfem" rate "$arg/inputs/seed001_23_69_rate_thesis_kh.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
+      { cat "$work/stdout"; fail "rate run failed"; }
+    grep "AGMA sigma_H" "$work/stdout"
+    awk 'BEGIN { split("827.0 739.7 640.6 523.1", H); split("127.0 101.6 76.2 50.8", F1); split("110.9 88.7 66.5 44.4", F2) }
+         /AGMA sigma_H/ { n++; gsub(",", ""); h = $8; f1 = $10; f2 = $12
+           for (k = 1; k <= 3; k++) { v = (k == 1 ? h : k == 2 ? f1 : f2); r = (k == 1 ? H[n] : k == 2 ? F1[n] : F2[n])
+             e = (v - r) / r; if (e < 0) e = -e; if (e > m) m = e; if (e > 0.01) { print "off by " 100 * e " %: " v " vs " r; bad++ } } }
+         END { printf "12 AGMA stresses, max deviation from seed 001: %.3f %%\n", 100 * m; exit (bad > 0 || n != 4) }' "$work/stdout" ||
+      fail "seed 001 AGMA tables not reproduced within 1 %"
     ;;
   demo)
     "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
