@@ -235,7 +235,7 @@ namespace gearfem::commands
         {}
       out << "\n| T1 [N m] | mean STE [um] | STE p-p [um] | mean k_secant [N/(mm um)] | ISO 6336-1 "
              "c_gamma_alpha [N/(mm um)] | ratio | max p [MPa] | max root stress pinion/gear [MPa] | "
-             "unresolved pairs (of all positions) |\n|---|---|---|---|---|---|---|---|---|\n";
+             "unresolved pair-positions (pairs x positions) |\n|---|---|---|---|---|---|---|---|---|\n";
       const auto T_col = t.sweep.column("torque"), ste = t.sweep.column("STE"),
                  k = t.sweep.column("k_secant per width"), p = t.sweep.column("p_max"),
                  sp1 = t.sweep.column("root stress pinion"), sp2 = t.sweep.column("root stress gear");
@@ -261,9 +261,10 @@ namespace gearfem::commands
         n_unresolved += n;
       if (n_unresolved > 0)
         out << "warning: " << n_unresolved
-            << " loaded tooth pairs (all torques) have fewer than 5 contact nodes across the patch: their peak "
-               "pressure is unresolved (refine Mesh/h_contact); STE, stiffness and root stress are "
-               "not affected\n";
+            << " loaded tooth-pair positions (each loaded pair at each position, all torques) have fewer "
+               "than 5 contact nodes across the patch: their peak pressure is unresolved (refine "
+               "Mesh/h_contact; column \"resolved\" of pairs.csv); STE, stiffness and root "
+               "stress are not affected\n";
     }
   } // namespace
 
