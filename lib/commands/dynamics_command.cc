@@ -146,8 +146,9 @@ namespace gearfem::commands
     /// The seed 000 torque table T(theta, delta) (Gkimisis 2019 eqs. 3.10-3.17, with the
     /// corner contacts OA/BΓ) of the Weber/Cornell model (lib/analytical) on the generated
     /// pair, as a dynamics TableLaw:
-    /// 128 positions over one mesh period from the start of contact A, 41 compressions from
-    /// 0 to 10 F_static / k_min (k_min: smallest secant mesh stiffness at F_static).
+    /// 128 positions over one mesh period from the start of contact A, 41 compressions on a
+    /// geometric grid from 0 to 10 F_static / k_min (k_min: smallest secant mesh stiffness at
+    /// F_static).
     std::shared_ptr<const dyn::MeshForceLaw> analytical_table(const dyn::DynamicsCase &c,
                                                               double &backlash,
                                                               std::vector<std::string> &notes)
@@ -167,14 +168,19 @@ namespace gearfem::commands
       const int nt = 128, nd = 41;
       for (int i = 0; i < nt; ++i)
         t.theta.push_back(phiA + t.period * i / nt);
-      for (int j = 0; j < nd; ++j)
-        t.second.push_back(10 * F / kmin * j / (nd - 1));
+      // Geometric grid of x (seed 000): 0, then x_max 1e-3 q^(j-1) up to x_max = 10 F/k_min,
+      // dense where the Hertz term and the corner contacts make T(x) curved.
+      const double xmax = 10 * F / kmin, q = std::pow(1e3, 1.0 / (nd - 2));
+      t.second.push_back(0.0);
+      for (int j = 1; j < nd; ++j)
+        t.second.push_back(j + 1 == nd ? xmax : xmax * 1e-3 * std::pow(q, j - 1));
       for (const auto &row : analytical::torque_table(mm, t.theta, t.second))
         t.values.insert(t.values.end(), row.begin(), row.end());
       t.require_covers_load(F);
       if (backlash < 0)
         backlash = pair.normal_backlash();
-      notes.push_back("analytical torque table (Weber/Cornell, plane stress, corner contact OA/BG): 128 x 41, delta up to " +
+      notes.push_back("analytical torque table (Weber/Cornell, plane stress, corner contact OA/BG): 128 x 41 "
+                     "(geometric delta grid), delta up to " +
                       to_string_g(10 * F / kmin * 1e6) + " um; generated-pair backlash " +
                       to_string_g(pair.normal_backlash() * 1e6) + " um");
       auto law = std::make_shared<dyn::TableLaw>(t, c.theta_interpolation);
