@@ -5,7 +5,12 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-gearfem="${GEARFEM:-$root/build/app/gearfem}"
+gearfem="${GEARFEM:-${GEARFEM_BUILD_DIR:-$root/build}/app/gearfem}"
+if [ -z "${GEARFEM:-}" ]; then # build it (Release, incremental)
+  build="${GEARFEM_BUILD_DIR:-$root/build}"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$build" --target gearfem -j2 > /dev/null
+fi
 out="${OUT:-$here/results}"
 for c in sweep_rk4 sweep_reference; do
   /usr/bin/time -f "$c wall %e s" "$gearfem" dynamics "$here/$c.prm" --output-dir "$out/$c"

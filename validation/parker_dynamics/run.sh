@@ -4,15 +4,21 @@
 # (2) STE excitation with the raw FE STE curve (the FE sweep.csv, kbar from F_n/STE) and
 # (3) the analytical Weber/Cornell torque table; analyse.py reports the resonance, jump
 # frequencies and contact loss and plots parker_sweeps{,_ste,_analytical}.png.
-# Needs validation/parker_ste/results/plane_stress/results.h5 (validation/parker_ste/run.sh).
+# Uses validation/parker_ste/results/plane_stress/results.h5 (runs validation/parker_ste/run.sh
+# first if it is missing).
 # Usage: validation/parker_dynamics/run.sh   (GEARFEM=path/to/gearfem to override)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-gearfem="${GEARFEM:-$root/build/app/gearfem}"
+gearfem="${GEARFEM:-${GEARFEM_BUILD_DIR:-$root/build}/app/gearfem}"
+if [ -z "${GEARFEM:-}" ]; then # build it (Release, incremental)
+  build="${GEARFEM_BUILD_DIR:-$root/build}"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$build" --target gearfem -j2 > /dev/null
+fi
 out="$here/results" # the sweep inputs name results/tables/mesh_torque.h5
-[ -f "$here/../parker_ste/results/plane_stress/results.h5" ] ||
-  { echo "run validation/parker_ste/run.sh first (FE sweeps)" >&2; exit 1; }
+# The FE sweeps (about 10 min) are computed once and reused.
+[ -f "$here/../parker_ste/results/plane_stress/results.h5" ] || "$here/../parker_ste/run.sh"
 "$gearfem" calibrate "$here/calibrate_tables.prm" --output-dir "$out/tables" | grep -E "^tables|held out" || true
 for T in 100 200 340; do
   for kind in fe ste analytical; do

@@ -6,7 +6,12 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-gearfem="${GEARFEM:-$root/build/app/gearfem}"
+gearfem="${GEARFEM:-${GEARFEM_BUILD_DIR:-$root/build}/app/gearfem}"
+if [ -z "${GEARFEM:-}" ]; then # build it (Release, incremental)
+  build="${GEARFEM_BUILD_DIR:-$root/build}"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$build" --target gearfem -j2 > /dev/null
+fi
 out="${OUT:-$here/results}"
 cases=(case1_5Nm_600rpm case2_20Nm_1200rpm case3_40Nm_1200rpm case4_20Nm_1200rpm_a+1mm)
 for c in "${cases[@]}"; do
