@@ -104,27 +104,33 @@ namespace gearfem::dynamics
   }
 
   // ---------------------------------------------------------------- tables
+  const char *second_axis_name(MeshTable::Kind k)
+  {
+    return k == MeshTable::Kind::torque_vs_compression ? "delta" :
+           k == MeshTable::Kind::stiffness_vs_load     ? "load" :
+                                                        "torque";
+  }
+  const char *second_axis_unit(MeshTable::Kind k)
+  {
+    return k == MeshTable::Kind::torque_vs_compression ? "m" :
+           k == MeshTable::Kind::stiffness_vs_load     ? "N" :
+                                                        "N*m";
+  }
+  const char *value_axis_unit(MeshTable::Kind k)
+  {
+    return k == MeshTable::Kind::torque_vs_compression ? "N*m" :
+           k == MeshTable::Kind::stiffness_vs_load     ? "N/m" :
+                                                        "m";
+  }
+  const char *value_quantity(MeshTable::Kind k)
+  {
+    return k == MeshTable::Kind::torque_vs_compression ? "torque" :
+           k == MeshTable::Kind::stiffness_vs_load     ? "stiffness" :
+                                                        "transmission error";
+  }
+
   namespace
   {
-    const char *second_axis_name(MeshTable::Kind k)
-    {
-      return k == MeshTable::Kind::torque_vs_compression ? "delta" :
-             k == MeshTable::Kind::stiffness_vs_load     ? "load" :
-                                                          "torque";
-    }
-    const char *second_axis_unit(MeshTable::Kind k)
-    {
-      return k == MeshTable::Kind::torque_vs_compression ? "m" :
-             k == MeshTable::Kind::stiffness_vs_load     ? "N" :
-                                                          "N*m";
-    }
-    const char *value_axis_unit(MeshTable::Kind k)
-    {
-      return k == MeshTable::Kind::torque_vs_compression ? "N*m" :
-             k == MeshTable::Kind::stiffness_vs_load     ? "N/m" :
-                                                          "m";
-    }
-
     /// Index of the node of `axis` at x (relative tolerance 1e-9 of the axis span); -1: none.
     long node_at(const std::vector<double> &axis, double x)
     {

@@ -148,6 +148,14 @@ namespace gearfem::dynamics
     double value(std::size_t i, std::size_t j) const { return values[i * second.size() + j]; }
   };
 
+  /// Name and unit of the second axis ("delta" m, "load" N, "torque" N*m), the unit of the
+  /// values ("N*m", "N/m", "m") and their quantity ("torque", "stiffness", "transmission
+  /// error") of a table kind: the names of docs/mesh-tables.md, shared with lib/io.
+  const char *second_axis_name(MeshTable::Kind k);
+  const char *second_axis_unit(MeshTable::Kind k);
+  const char *value_axis_unit(MeshTable::Kind k);
+  const char *value_quantity(MeshTable::Kind k);
+
   enum class ThetaInterpolation
   {
     linear,         ///< bilinear in (theta, delta)

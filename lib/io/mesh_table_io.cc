@@ -70,24 +70,11 @@ namespace gearfem::io
     };
 
     using Kind = MeshTable::Kind;
-    const char *second_name(Kind k)
-    {
-      return k == Kind::torque_vs_compression ? "delta" : k == Kind::stiffness_vs_load ? "load" : "torque";
-    }
-    const char *second_unit(Kind k)
-    {
-      return k == Kind::torque_vs_compression ? "m" : k == Kind::stiffness_vs_load ? "N" : "N*m";
-    }
-    const char *value_unit(Kind k)
-    {
-      return k == Kind::torque_vs_compression ? "N*m" : k == Kind::stiffness_vs_load ? "N/m" : "m";
-    }
-    const char *quantity(Kind k)
-    {
-      return k == Kind::torque_vs_compression ? "torque" :
-             k == Kind::stiffness_vs_load     ? "stiffness" :
-                                                "transmission error";
-    }
+    // Names and units of docs/mesh-tables.md (one definition, in dynamics/mesh_force.h).
+    const auto second_name = dynamics::second_axis_name;
+    const auto second_unit = dynamics::second_axis_unit;
+    const auto value_unit  = dynamics::value_axis_unit;
+    const auto quantity    = dynamics::value_quantity;
 
     std::string utc_now()
     {
