@@ -49,6 +49,7 @@ namespace gearfem::commands
                                 {"k_tangent per width", "N/(mm um)"}, {"pairs in contact", "-"},
                                 {"max load share", "-"}, {"T1 contact moment", "N m"},
                                 {"T1 reaction", "N m"}, {"T2 z1/(T1 z2)", "-"}, {"p_max", "MPa"},
+                                {"p_max edge", "MPa"},
                                 {"root stress pinion", "MPa"}, {"root stress gear", "MPa"},
                                 {"active nodes", "-"}, {"geometry iterations", "-"},
                                 {"active-set iterations", "-"}, {"load cuts", "-"},
@@ -57,7 +58,8 @@ namespace gearfem::commands
                                 {"pinion tooth", "-"}, {"gear tooth", "-"}, {"F_n", "N"},
                                 {"load share", "-"}, {"active nodes", "-"}, {"p_max", "MPa"},
                                 {"p_Hertz", "MPa"}, {"half width", "mm"}, {"a_Hertz", "mm"},
-                                {"resolved", "-"}, {"on involute", "-"}, {"radius pinion", "mm"},
+                                {"resolved", "-"}, {"edge contact", "-"}, {"slave body", "-"},
+                                {"radius pinion", "mm"},
                                 {"root stress pinion", "MPa"}, {"root radius pinion", "mm"},
                                 {"root stress gear", "MPa"}, {"root radius gear", "mm"}});
       Table pressure = make_table({{"torque", "N m"}, {"position", "-"}, {"roll angle", "deg"},
@@ -68,13 +70,14 @@ namespace gearfem::commands
       {
         const double deg = 180 / pi;
         const auto &s = r.solution;
-        double share = 0, pmax = 0;
+        double share = 0;
         for (const auto &p : r.pairs)
-          share = std::max(share, p.share), pmax = std::max(pmax, p.p_max);
+          share = std::max(share, p.share);
         sweep.add_row({r.torque, double(index), r.phi1 * deg, double(point_code(name)), r.ste * 1e6,
                        r.rotation * 1e6, r.normal_force, r.k_secant, r.k_tangent, width(r.k_secant),
                        width(r.k_tangent), double(r.n_pairs), share, r.torque_contact, r.torque_reaction,
-                       r.torque_gear / (r.torque * z_ratio), pmax / 1e6, r.max_root_stress_pinion / 1e6,
+                       r.torque_gear / (r.torque * z_ratio), r.p_max / 1e6, r.p_max_edge / 1e6,
+                       r.max_root_stress_pinion / 1e6,
                        r.max_root_stress_gear / 1e6, double(s.n_active), double(s.geometry_iterations),
                        double(s.active_set_iterations), double(s.load_cuts), s.complementarity,
                        s.max_penetration * 1e6, r.t_total});
@@ -82,7 +85,8 @@ namespace gearfem::commands
           {
             pairs.add_row({r.torque, double(index), r.phi1 * deg, double(p.pinion_tooth), double(p.gear_tooth),
                            p.force, p.share, double(p.active_nodes), p.p_max / 1e6, p.p_hertz / 1e6,
-                           p.half_width * 1e3, p.a_hertz * 1e3, double(p.resolved), double(p.on_involute),
+                           p.half_width * 1e3, p.a_hertz * 1e3, double(p.resolved), double(p.edge),
+                           double(p.slave_body),
                            p.radius_pinion * 1e3, p.root_stress_pinion / 1e6, p.root_radius_pinion * 1e3,
                            p.root_stress_gear / 1e6, p.root_radius_gear * 1e3});
             for (const auto &q : p.profile)
@@ -190,7 +194,7 @@ namespace gearfem::commands
                 }
               t.add(r, name, int(i), z_ratio);
               for (const auto &p : r.pairs)
-                unresolved[T] += p.share > 0.05 && !p.resolved;
+                unresolved[T] += p.share > 0.05 && !p.resolved && !p.edge;
               if (keep)
                 {
                   std::ostringstream n;

@@ -34,7 +34,11 @@ namespace gearfem::contact
     double a_hertz = 0;       ///< Hertz half-width [m]
     double radius_pinion = 0; ///< radius of the peak-pressure point on the pinion [m]
     double radius_gear = 0;   ///< the same on the gear [m]
-    bool on_involute = true;  ///< the peak lies on both involute flanks (not a tip corner)
+    /// The loaded patch reaches a tip edge of either gear: its tip corner, tip rounding or
+    /// tip land (extended or corner contact). Its pressure is not Hertzian: at a sharp
+    /// corner it is singular and grows under refinement. false: flank-to-flank contact.
+    bool edge = false;
+    int slave_body = 1;       ///< body that carried the slave nodes of this pair
     double root_stress_pinion = 0, root_stress_gear = 0; ///< peak fillet sigma_1 [Pa]
     double root_radius_pinion = 0, root_radius_gear = 0; ///< where [m]
     std::vector<std::array<double, 3>> profile; ///< (s [m] along the pinion flank from the peak, radius [m], p [Pa])
@@ -54,6 +58,8 @@ namespace gearfem::contact
     double torque_reaction = 0; ///< reaction moment at the pinion bore [N m]
     double torque_gear = 0;     ///< |moment of the contact forces on gear 2 about O2| [N m]
     int n_pairs = 0;            ///< tooth pairs carrying load
+    double p_max = 0;           ///< peak pressure over the flank-to-flank (Hertzian) pairs [Pa]
+    double p_max_edge = 0;      ///< peak pressure over the edge/corner pairs [Pa] (mesh-dependent)
     std::vector<ToothPairResult> pairs;
     ContactSolution solution;
     double max_root_stress_pinion = 0, max_root_stress_gear = 0; ///< [Pa]
@@ -94,13 +100,38 @@ namespace gearfem::contact
     /// Fine teeth (body-frame indices) of gear i.
     const std::vector<int> &fine_teeth(int i) const { return fine_[i - 1]; }
 
+    /// The scene at pinion position phi1: rigid placements and, with per-zone slaves, the
+    /// slave nodes of each tooth pair. `normal_force` [N] sizes the Hertz patch that decides
+    /// whether a tip corner is within reach.
+    Scene scene(double phi1, double normal_force) const;
+    /// Path position of tooth `tooth` of gear `body` at pinion position phi1: the pinion
+    /// position at which tooth 0 of the pinion stands where this tooth stands now [rad]
+    /// (0 at C; the teeth of a meshing pair share it).
+    double tooth_roll(int body, int tooth, double phi1) const;
+    /// Which body carries the slave nodes of the tooth pair at path position psi (see
+    /// ContactOptions::per_zone_slaves).
+    int zone_slave(double psi, double normal_force) const;
+
+    /// A loaded patch with fewer nodes is not resolved (its pressure peak is not reported
+    /// as resolved, and the ellipse fit is not attempted).
+    static constexpr int min_patch_nodes = 5;
+
   private:
     PositionResult finish(double phi1, double torque, ContactSolution &&s, bool keep);
+    /// The contact point touches a tip edge (corner, tip rounding or tip land) of either gear.
+    bool at_tip_edge(const ContactPoint &p, const geometry::Placement &P1, const geometry::Placement &P2) const;
+    /// Peak pressure, profile, ellipse fit and Hertz comparison of one loaded pair.
+    void pressure_and_hertz(ToothPairResult &tp, const ContactSolution &sol, const geometry::Placement &P1,
+                            const geometry::Placement &P2) const;
     const geometry::GearPair *pair_;
     std::unique_ptr<fem::ElasticBody> bodies_[2];
     std::unique_ptr<ContactSurface> surfaces_[2];
     std::unique_ptr<TwoBodyContact> solver_;
     std::vector<int> fine_[2];
+    std::vector<bool> slave_capable_[2]; ///< surface nodes on a drive flank, tip rounding or tip
+    int tooth0_[2] = {0, 0};             ///< tooth of each gear at C when phi1 = 0
+    double sense_[2] = {1, -1};          ///< sign of d(body angle)/d(phi1)
+    double h_reach_ = 0;                 ///< contact element size of the coarser flank [m]
     ContactOptions options_;
     double t_setup_ = 0, t_mesh_ = 0;
   };

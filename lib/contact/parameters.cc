@@ -61,8 +61,17 @@ namespace gearfem::contact
     prm.declare_entry("Max load cuts", "4", Integer(),
                       "Load-step halvings after a non-converged solve. Units: none. Allowed: >= 0.");
     prm.declare_entry("Slave body", "auto", Selection("auto|1|2"),
-                      "Body carrying the slave nodes: auto = the softer gear (the pinion when "
-                      "equal). Units: none.");
+                      "Body carrying the slave nodes of flank-to-flank contacts: auto = the softer "
+                      "gear (the pinion when equal). With `Slave selection = per zone` a tooth "
+                      "pair whose contact has a tip corner within reach takes the corner's owner "
+                      "as its slave instead. Units: none.");
+    prm.declare_entry("Slave selection", "per zone", Selection("per zone|fixed"),
+                      "per zone: in each tooth pair whose contact lies within reach of a tip "
+                      "corner (2 Hertz half-widths + 3 contact elements along the flank, or "
+                      "outside the path A-E) the gear owning that corner carries the slave nodes, "
+                      "so that the corner is a node checked against the smooth mating flank "
+                      "(docs/contact.md); `Slave body` elsewhere. fixed: every node of `Slave "
+                      "body` (single-pass node-to-segment, for comparison). Units: none.");
     prm.declare_entry("Friction coefficient", "0", Double(),
                       "Coulomb friction. Only frictionless contact (0) is implemented. Units: none. "
                       "Allowed: 0.");
@@ -82,6 +91,7 @@ namespace gearfem::contact
     o.max_load_cuts             = prm.get_integer("Max load cuts");
     const std::string slave     = prm.get("Slave body");
     o.slave = slave == "auto" ? (E2 < E1 ? 2 : 1) : std::stoi(slave);
+    o.per_zone_slaves           = prm.get("Slave selection") == "per zone";
     const double mu = prm.get_double("Friction coefficient");
     prm.leave_subsection();
     if (mu != 0.0)

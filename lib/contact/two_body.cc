@@ -223,6 +223,14 @@ namespace gearfem::contact
                 c.index[d] = int(c.dofs.size());
                 c.dofs.push_back(d);
               }
+        c.node_h.assign(s.nodes().size(), 0.0);
+        for (const auto &f : s.faces())
+          {
+            const auto &pc = s.body().mesh().pieces[f.piece];
+            const double L = (pc.curve.point(f.t_hi) - pc.curve.point(f.t_lo)).norm();
+            for (const int n : f.nodes)
+              c.node_h[n] = std::max(c.node_h[n], L);
+          }
         c.C = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
         c.have.assign(c.dofs.size(), 0);
         c.u = Eigen::VectorXd::Zero(c.dofs.size());
@@ -338,12 +346,218 @@ namespace gearfem::contact
     throw SolverError(msg.str());
   }
 
+  std::vector<std::pair<int, int>> TwoBodyContact::slaves(const Scene &scene) const
+  {
+    std::vector<std::pair<int, int>> r;
+    const bool masks = !scene.slave_nodes[0].empty() || !scene.slave_nodes[1].empty();
+    for (int b = 1; b <= 2; ++b)
+      {
+        if (!masks && b != options_.slave)
+          continue;
+        const auto &mask = scene.slave_nodes[b - 1];
+        for (std::size_t i = 0; i < surface(b).nodes().size(); ++i)
+          if (!masks || (i < mask.size() && mask[i]))
+            r.emplace_back(b, int(i));
+      }
+    return r;
+  }
+
+  std::vector<TwoBodyContact::Candidate> TwoBodyContact::search(const Scene &scene, double q) const
+  {
+    const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
+    std::vector<Candidate> cand;
+    for (const auto &[S, i] : slaves(scene))
+      {
+        const int M = 3 - S;
+        const ContactSurface &ms = surface(M);
+        const auto &use          = scene.master_pieces[M - 1];
+        const auto &nd           = surface(S).nodes()[i];
+        const Vec2 xs = P[S - 1].apply(nd.x) + P[S - 1].apply_vector(displacement(S, i));
+        const Vec2 y  = to_body(P[M - 1], xs);
+        Candidate c;
+        c.S = S, c.node = i;
+        c.pr = ms.project(y, options_.search_distance, use);
+        if (c.pr.piece < 0)
+          continue;
+        // Closest point on the displaced master: project y - u_m(t), fixed point.
+        for (int k = 0; k < 3; ++k)
+          {
+            c.face          = ms.face_at(c.pr.piece, c.pr.t, c.shape);
+            const Vec2 um   = interpolate(M, c.face, c.shape);
+            const auto next = ms.project(y - um, options_.search_distance, use);
+            if (next.piece < 0)
+              break;
+            const bool same = next.piece == c.pr.piece && std::abs(next.t - c.pr.t) < 1e-12;
+            c.pr            = next;
+            if (same)
+              break;
+          }
+        c.face        = ms.face_at(c.pr.piece, c.pr.t, c.shape);
+        const Vec2 um = interpolate(M, c.face, c.shape);
+        c.g           = (y - c.pr.point - um).dot(c.pr.normal);
+        if (std::abs(c.g) > options_.search_distance)
+          continue;
+        c.n_pair = P[M - 1].apply_vector(c.pr.normal);
+        cand.push_back(std::move(c));
+      }
+    return cand;
+  }
+
+  TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene,
+                                                          const std::vector<Candidate> &cand, double q,
+                                                          const std::vector<double> &lambda_node,
+                                                          double &t_compliance)
+  {
+    const int m = int(cand.size());
+    const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
+    // Material scale for the penalty: the smaller E.
+    const double E = std::min(s1_->body().material().youngs_modulus, s2_->body().material().youngs_modulus);
+    const auto velocity = [&](const Vec2 &x) {
+      if (drive_.kind == Drive::Kind::translation)
+        return drive_.direction;
+      const Vec2 c = scene.placement[0].centre;
+      return Vec2(-(x.y() - c.y()), x.x() - c.x());
+    };
+    Linearisation L;
+    L.B[0].assign(m, {});
+    L.B[1].assign(m, {});
+    L.a.resize(m), L.ghat.resize(m), L.D.resize(m), L.lambda0.resize(m);
+    std::vector<int> used[2];
+    for (int k = 0; k < m; ++k)
+      {
+        const auto &c  = cand[k];
+        const int S = c.S, M = 3 - S;
+        const auto &nd = surface(S).nodes()[c.node];
+        const auto &ms = surface(M);
+        const Vec2 nS  = rotate(c.n_pair, -P[S - 1].angle);
+        const Vec2 nM  = c.pr.normal;
+        auto &cS       = cache_[S - 1];
+        auto &cM       = cache_[M - 1];
+        L.B[S - 1][k].push_back({cS.index[nd.dof_x], nS.x()});
+        L.B[S - 1][k].push_back({cS.index[nd.dof_y], nS.y()});
+        const auto &face = ms.faces()[c.face];
+        for (std::size_t j = 0; j < face.nodes.size(); ++j)
+          {
+            const auto &mn = ms.nodes()[face.nodes[j]];
+            L.B[M - 1][k].push_back({cM.index[mn.dof_x], -c.shape[j] * nM.x()});
+            L.B[M - 1][k].push_back({cM.index[mn.dof_y], -c.shape[j] * nM.y()});
+          }
+        // dg/dq: body 1 is the driven body, slave or master. As master, its share of the
+        // force acts at the face nodes (weights N_j), so the arm is the nodal one: then
+        // -a^T lambda is exactly the moment of the nodal forces about O1.
+        if (S == 1)
+          L.a[k] = c.n_pair.dot(velocity(P[0].apply(nd.x)));
+        else
+          {
+            L.a[k] = 0;
+            for (std::size_t j = 0; j < face.nodes.size(); ++j)
+              L.a[k] -= c.shape[j] * c.n_pair.dot(velocity(P[0].apply(ms.nodes()[face.nodes[j]].x)));
+          }
+        double btu = 0;
+        for (int b = 0; b < 2; ++b)
+          for (const auto &[i, v] : L.B[b][k])
+            btu += v * cache_[b].u[i];
+        L.ghat[k] = c.g - L.a[k] * q - btu;
+        if (options_.method == Method::penalty)
+          {
+            const double thickness = surface(S).body().material().thickness;
+            L.D[k] = cS.node_h[c.node] / (options_.penalty_factor * E * thickness * nd.weight);
+          }
+        else
+          L.D[k] = 0.0;
+        L.lambda0[k] = lambda_node[key(S, c.node)];
+        for (int b = 0; b < 2; ++b)
+          for (const auto &[i, v] : L.B[b][k])
+            used[b].push_back(i);
+      }
+    for (int b = 0; b < 2; ++b)
+      {
+        std::sort(used[b].begin(), used[b].end());
+        used[b].erase(std::unique(used[b].begin(), used[b].end()), used[b].end());
+      }
+    const double t0 = t_compliance;
+    for (int b = 1; b <= 2; ++b)
+      ensure_columns(b, used[b - 1], t_compliance);
+    L.t_flex = t_compliance - t0;
+
+    // W = sum_b B_b^T C_b B_b on the used universe entries.
+    L.W = Eigen::MatrixXd::Zero(m, m);
+    for (int b = 0; b < 2; ++b)
+      {
+        const auto &u = used[b];
+        std::vector<int> pos(cache_[b].dofs.size(), -1);
+        for (std::size_t i = 0; i < u.size(); ++i)
+          pos[u[i]] = int(i);
+        Eigen::MatrixXd Bb = Eigen::MatrixXd::Zero(u.size(), m);
+        for (int k = 0; k < m; ++k)
+          for (const auto &[i, v] : L.B[b][k])
+            Bb(pos[i], k) += v;
+        Eigen::MatrixXd Cs(u.size(), u.size());
+        for (std::size_t i = 0; i < u.size(); ++i)
+          for (std::size_t j = 0; j < u.size(); ++j)
+            Cs(i, j) = cache_[b].C(u[i], u[j]);
+        Cs = 0.5 * (Cs + Cs.transpose()).eval();
+        L.W.noalias() += Bb.transpose() * Cs * Bb;
+      }
+    return L;
+  }
+
+  void TwoBodyContact::fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
+                                     const Linearisation &lin, const Eigen::VectorXd &lambda,
+                                     const Eigen::VectorXd &gap, const Scene &scene, double q) const
+  {
+    const int m = int(cand.size());
+    // Pressure recovered on each slave surface from its own nodal forces.
+    std::vector<double> node_force[2] = {std::vector<double>(s1_->nodes().size(), 0.0),
+                                         std::vector<double>(s2_->nodes().size(), 0.0)};
+    for (int k = 0; k < m; ++k)
+      node_force[cand[k].S - 1][cand[k].node] = lambda[k];
+    std::vector<double> node_p[2];
+    for (int b = 0; b < 2; ++b)
+      node_p[b] = surface(b + 1).recover_pressure(node_force[b], surface(b + 1).body().material().thickness);
+    out.max_penetration = 0;
+    for (int k = 0; k < m; ++k)
+      {
+        const auto &c  = cand[k];
+        const int M    = 3 - c.S;
+        const auto &nd = surface(c.S).nodes()[c.node];
+        const auto &mp = surface(M).body().mesh().pieces[c.pr.piece];
+        ContactPoint p;
+        p.slave_body    = c.S;
+        p.node          = c.node;
+        p.slave_tooth   = nd.tooth;
+        p.master_piece  = c.pr.piece;
+        p.master_tooth  = mp.tooth;
+        p.master_t      = c.pr.t;
+        p.slave_code    = mesh::boundary::code_of(nd.boundary_id);
+        p.master_code   = mesh::boundary::code_of(mp.boundary_id);
+        p.master_corner = c.pr.corner;
+        p.master_point  = placed(scene, M, q).apply(c.pr.point);
+        p.x             = placed(scene, c.S, q).apply(nd.x);
+        p.normal        = c.n_pair;
+        p.gap           = gap[k];
+        p.force         = lambda[k];
+        p.weight        = nd.weight;
+        p.pressure      = node_p[c.S - 1][c.node];
+        p.arm           = lin.a[k];
+        out.max_penetration = std::max(out.max_penetration, -p.gap);
+        out.points.push_back(p);
+      }
+    for (int b = 0; b < 2; ++b)
+      {
+        std::vector<double> f(cache_[b].dofs.size(), 0.0);
+        for (int k = 0; k < m; ++k)
+          for (const auto &[i, v] : lin.B[b][k])
+            f[i] += lambda[k] * v;
+        for (std::size_t i = 0; i < f.size(); ++i)
+          if (f[i] != 0)
+            out.forces[b].emplace_back(cache_[b].dofs[i], f[i]);
+      }
+  }
+
   ContactSolution TwoBodyContact::solve_once(const Scene &scene, Control control, double value,
                                              const ContactSolution *warm)
   {
-    const int S = options_.slave, M = 3 - S;
-    const ContactSurface &ss = surface(S), &ms = surface(M);
-    const auto &snodes       = ss.nodes();
     ContactSolution out;
     double q = control == Control::displacement ? value : (warm ? warm->q : 0.0);
     if (control == Control::load && warm && warm->load > 0 && value > 0)
@@ -352,12 +566,12 @@ namespace gearfem::contact
     // Initial elastic state: from the warm start's forces, else unloaded.
     for (auto &c : cache_)
       c.u.setZero();
-    std::vector<double> lambda_node(snodes.size(), 0.0);
+    std::vector<double> lambda_node(s1_->nodes().size() + s2_->nodes().size(), 0.0);
     if (warm)
       {
         const double scale = (control == Control::load && warm->load > 0) ? value / warm->load : 1.0;
         for (const auto &p : warm->points)
-          lambda_node[p.node] = p.force * scale;
+          lambda_node[key(p.slave_body, p.node)] = p.force * scale;
         for (int b = 1; b <= 2; ++b)
           {
             auto &c = cache_[b - 1];
@@ -370,72 +584,12 @@ namespace gearfem::contact
           }
       }
 
-    // Material scale for the penalty: the smaller E, thickness of the slave body.
-    const double E = std::min(s1_->body().material().youngs_modulus, s2_->body().material().youngs_modulus);
-    const double thickness = ss.body().material().thickness;
-    std::vector<double> node_h(snodes.size(), 0.0);
-    for (const auto &f : ss.faces())
-      {
-        const auto &pc = ss.body().mesh().pieces[f.piece];
-        const double L = (pc.curve.point(f.t_hi) - pc.curve.point(f.t_lo)).norm();
-        for (const int n : f.nodes)
-          node_h[n] = std::max(node_h[n], L);
-      }
-
-    struct Candidate
-    {
-      int node, face;
-      Projection pr;
-      std::vector<double> shape;
-      double g;
-      Vec2 n_pair;
-    };
     std::vector<int> prev_active;
     double prev_q = q;
-    const auto velocity = [&](const Vec2 &x) {
-      if (drive_.kind == Drive::Kind::translation)
-        return drive_.direction;
-      const Vec2 c = scene.placement[0].centre;
-      return Vec2(-(x.y() - c.y()), x.x() - c.x());
-    };
-
     for (int it = 0; it < options_.max_geometry_iterations; ++it)
       {
         auto t0 = Clock::now();
-        const geometry::Placement PS = placed(scene, S, q), PM = placed(scene, M, q);
-        std::vector<Candidate> cand;
-        for (std::size_t i = 0; i < snodes.size(); ++i)
-          {
-            if (!scene.slave_nodes.empty() && !scene.slave_nodes[i])
-              continue;
-            const Vec2 xs = PS.apply(snodes[i].x) + PS.apply_vector(displacement(S, int(i)));
-            const Vec2 y  = to_body(PM, xs);
-            Candidate c;
-            c.node = int(i);
-            c.pr   = ms.project(y, options_.search_distance, scene.master_pieces);
-            if (c.pr.piece < 0)
-              continue;
-            // Closest point on the displaced master: project y - u_m(t), fixed point.
-            for (int k = 0; k < 3; ++k)
-              {
-                c.face          = ms.face_at(c.pr.piece, c.pr.t, c.shape);
-                const Vec2 um   = interpolate(M, c.face, c.shape);
-                const auto next = ms.project(y - um, options_.search_distance, scene.master_pieces);
-                if (next.piece < 0)
-                  break;
-                const bool same = next.piece == c.pr.piece && std::abs(next.t - c.pr.t) < 1e-12;
-                c.pr            = next;
-                if (same)
-                  break;
-              }
-            c.face        = ms.face_at(c.pr.piece, c.pr.t, c.shape);
-            const Vec2 um = interpolate(M, c.face, c.shape);
-            c.g           = (y - c.pr.point - um).dot(c.pr.normal);
-            if (std::abs(c.g) > options_.search_distance)
-              continue;
-            c.n_pair = PM.apply_vector(c.pr.normal);
-            cand.push_back(std::move(c));
-          }
+        const std::vector<Candidate> cand = search(scene, q);
         out.t_search += since(t0);
         const int m = int(cand.size());
         if (m == 0)
@@ -453,83 +607,12 @@ namespace gearfem::contact
                               " mm) of the mating body; check backlash, centre distance and positions");
           }
 
-        // Linearisation: B (per body, on the universe), a, ghat, D.
         t0 = Clock::now();
-        std::vector<std::vector<std::pair<int, double>>> Bcol[2];
-        Bcol[0].assign(m, {});
-        Bcol[1].assign(m, {});
-        Eigen::VectorXd a(m), ghat(m), D(m), lambda0(m);
-        std::vector<int> used[2];
-        for (int k = 0; k < m; ++k)
-          {
-            const auto &c   = cand[k];
-            const auto &nd  = snodes[c.node];
-            const Vec2 nS   = rotate(c.n_pair, -PS.angle);
-            const Vec2 nM   = c.pr.normal;
-            auto &cS        = cache_[S - 1];
-            auto &cM        = cache_[M - 1];
-            Bcol[S - 1][k].push_back({cS.index[nd.dof_x], nS.x()});
-            Bcol[S - 1][k].push_back({cS.index[nd.dof_y], nS.y()});
-            const auto &face = ms.faces()[c.face];
-            for (std::size_t j = 0; j < face.nodes.size(); ++j)
-              {
-                const auto &mn = ms.nodes()[face.nodes[j]];
-                Bcol[M - 1][k].push_back({cM.index[mn.dof_x], -c.shape[j] * nM.x()});
-                Bcol[M - 1][k].push_back({cM.index[mn.dof_y], -c.shape[j] * nM.y()});
-              }
-            a[k] = S == 1 ? c.n_pair.dot(velocity(PS.apply(nd.x))) :
-                            -c.n_pair.dot(velocity(PM.apply(c.pr.point)));
-            double btu = 0;
-            for (int b = 0; b < 2; ++b)
-              for (const auto &[i, v] : Bcol[b][k])
-                btu += v * cache_[b].u[i];
-            ghat[k] = c.g - a[k] * q - btu;
-            if (options_.method == Method::penalty)
-              {
-                const double eps = options_.penalty_factor * E * thickness * nd.weight / node_h[c.node];
-                D[k]             = 1.0 / eps;
-              }
-            else
-              D[k] = 0.0;
-            lambda0[k] = lambda_node[c.node];
-            for (int b = 0; b < 2; ++b)
-              for (const auto &[i, v] : Bcol[b][k])
-                used[b].push_back(i);
-          }
-        for (int b = 0; b < 2; ++b)
-          {
-            std::sort(used[b].begin(), used[b].end());
-            used[b].erase(std::unique(used[b].begin(), used[b].end()), used[b].end());
-          }
-        const double t_flex0 = out.t_compliance;
-        for (int b = 1; b <= 2; ++b)
-          ensure_columns(b, used[b - 1], out.t_compliance);
-        const double t_flex = out.t_compliance - t_flex0; // not counted as contact solve time
-
-        // W = sum_b B_b^T C_b B_b on the used universe entries.
-        Eigen::MatrixXd W = Eigen::MatrixXd::Zero(m, m);
-        for (int b = 0; b < 2; ++b)
-          {
-            const auto &u = used[b];
-            std::vector<int> pos(cache_[b].dofs.size(), -1);
-            for (std::size_t i = 0; i < u.size(); ++i)
-              pos[u[i]] = int(i);
-            Eigen::MatrixXd Bb = Eigen::MatrixXd::Zero(u.size(), m);
-            for (int k = 0; k < m; ++k)
-              for (const auto &[i, v] : Bcol[b][k])
-                Bb(pos[i], k) += v;
-            Eigen::MatrixXd Cs(u.size(), u.size());
-            for (std::size_t i = 0; i < u.size(); ++i)
-              for (std::size_t j = 0; j < u.size(); ++j)
-                Cs(i, j) = cache_[b].C(u[i], u[j]);
-            Cs = 0.5 * (Cs + Cs.transpose()).eval();
-            W.noalias() += Bb.transpose() * Cs * Bb;
-          }
-
-        NcpResult ncp = solve_ncp(W, D, a, ghat, control, value, q, lambda0,
+        const Linearisation lin = linearise(scene, cand, q, lambda_node, out.t_compliance);
+        NcpResult ncp = solve_ncp(lin.W, lin.D, lin.a, lin.ghat, control, value, q, lin.lambda0,
                                   options_.max_active_set_iterations);
         out.active_set_iterations += ncp.iterations;
-        out.t_solve += since(t0) - t_flex;
+        out.t_solve += since(t0) - lin.t_flex; // flexibility columns are not contact solve time
         if (!ncp.ok)
           {
             out.history.push_back("iteration " + std::to_string(it) + ": " + ncp.why);
@@ -546,19 +629,19 @@ namespace gearfem::contact
             c.u.setZero();
             for (int k = 0; k < m; ++k)
               if (ncp.lambda[k] != 0)
-                for (const auto &[i, v] : Bcol[b][k])
+                for (const auto &[i, v] : lin.B[b][k])
                   c.u += (ncp.lambda[k] * v) * c.C.col(i);
           }
         std::vector<int> active;
-        double lmax = 0, dl = 0;
-        std::vector<double> lambda_new(snodes.size(), 0.0);
+        std::vector<double> lambda_new(lambda_node.size(), 0.0);
         for (int k = 0; k < m; ++k)
           {
-            lambda_new[cand[k].node] = ncp.lambda[k];
+            lambda_new[key(cand[k].S, cand[k].node)] = ncp.lambda[k];
             if (ncp.active[k])
-              active.push_back(cand[k].node);
+              active.push_back(key(cand[k].S, cand[k].node));
           }
-        for (std::size_t i = 0; i < snodes.size(); ++i)
+        double lmax = 0, dl = 0;
+        for (std::size_t i = 0; i < lambda_node.size(); ++i)
           {
             lmax = std::max(lmax, std::abs(lambda_new[i]));
             dl   = std::max(dl, std::abs(lambda_new[i] - lambda_node[i]));
@@ -583,51 +666,14 @@ namespace gearfem::contact
         if (!settled)
           continue;
 
-        // Converged: fill the solution.
-        out.converged       = true;
-        out.q               = q;
-        out.load            = -a.dot(ncp.lambda);
-        out.tangent         = ncp.tangent;
-        out.complementarity = ncp.complementarity;
-        out.n_active        = int(active.size());
+        out.converged           = true;
+        out.q                   = q;
+        out.load                = -lin.a.dot(ncp.lambda);
+        out.tangent             = ncp.tangent;
+        out.complementarity     = ncp.complementarity;
+        out.n_active            = int(active.size());
         out.geometry_iterations = it + 1;
-        out.max_penetration = 0;
-        std::vector<double> node_force(snodes.size(), 0.0);
-        for (int k = 0; k < m; ++k)
-          node_force[cand[k].node] = ncp.lambda[k];
-        const std::vector<double> node_p = ss.recover_pressure(node_force, thickness);
-        const geometry::Placement PSf = placed(scene, S, q);
-        const auto &mpieces           = ms.body().mesh().pieces;
-        for (int k = 0; k < m; ++k)
-          {
-            const auto &c  = cand[k];
-            const auto &nd = snodes[c.node];
-            ContactPoint p;
-            p.node         = c.node;
-            p.slave_tooth  = nd.tooth;
-            p.master_piece = c.pr.piece;
-            p.master_tooth = mpieces[c.pr.piece].tooth;
-            p.master_t     = c.pr.t;
-            p.x            = PSf.apply(nd.x);
-            p.normal       = c.n_pair;
-            p.gap          = ncp.gap[k];
-            p.force        = ncp.lambda[k];
-            p.weight       = nd.weight;
-            p.pressure     = node_p[c.node];
-            p.arm          = a[k];
-            out.max_penetration = std::max(out.max_penetration, -p.gap);
-            out.points.push_back(p);
-          }
-        for (int b = 0; b < 2; ++b)
-          {
-            std::vector<double> f(cache_[b].dofs.size(), 0.0);
-            for (int k = 0; k < m; ++k)
-              for (const auto &[i, v] : Bcol[b][k])
-                f[i] += ncp.lambda[k] * v;
-            for (std::size_t i = 0; i < f.size(); ++i)
-              if (f[i] != 0)
-                out.forces[b].emplace_back(cache_[b].dofs[i], f[i]);
-          }
+        fill_solution(out, cand, lin, ncp.lambda, ncp.gap, scene, q);
         return out;
       }
     out.history.push_back("the geometric iteration did not settle in " +

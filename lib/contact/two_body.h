@@ -5,9 +5,13 @@
 // translation along a direction [m]) applied kinematically: the rigid placement is exact
 // and only the elastic part is a displacement. SI units.
 //
-// Formulation (node-to-segment, single pass; Wriggers, Computational Contact Mechanics,
-// 2nd ed. 2006, ch. 4-6). Slave nodes s of one body, master = exact curves of the other
-// body plus its displacement interpolated by the face shape functions N_j. Normal gap
+// Formulation (node-to-segment; Wriggers, Computational Contact Mechanics, 2nd ed. 2006,
+// ch. 4-6). Either body may carry slave nodes: the Scene says, per body, which surface nodes
+// are slaves at this configuration (a gear pair makes the owner of a tip corner the slave
+// of that tooth pair, see GearContactModel); each slave node s is checked against the
+// exact curves of the other body (the master) plus its displacement interpolated by the
+// face shape functions N_j. A scene with no slave masks uses ContactOptions::slave for
+// every node (single pass). Normal gap
 //   g_s = (x_s + u_s - x_m(t) - sum_j N_j u_j) . n
 // with n the master's outward normal. Linearised about the current state:
 //   g = g_hat + a q + B^T u,   u = C B lambda   =>   g = g_hat + a q + W lambda,
@@ -61,8 +65,13 @@ namespace gearfem::contact
     int max_geometry_iterations   = 25;
     /// Load-step cuts (halvings) tried after a non-converged solve.
     int max_load_cuts = 4;
-    /// Body that carries the slave nodes (1 or 2); the other is the master.
+    /// Body that carries the slave nodes (1 or 2); the other is the master. With
+    /// `per_zone_slaves` (GearContactModel), only where no tip corner is within reach.
     int slave = 1;
+    /// GearContactModel: the owner of a tip corner within reach of a tooth pair's contact
+    /// is the slave of that pair (so that a corner is always a node checked against a
+    /// smooth master flank); `slave` elsewhere. false: every node of `slave` (single pass).
+    bool per_zone_slaves = true;
     /// Throws InputError naming the `Contact` entry.
     void validate() const;
   };
@@ -82,10 +91,17 @@ namespace gearfem::contact
   /// One slave node in contact (or candidate) at the solution.
   struct ContactPoint
   {
-    int node = -1;         ///< slave surface node
+    int slave_body = 1;    ///< body carrying the slave node (1 or 2); the other is the master
+    int node = -1;         ///< slave surface node (index into that body's surface)
     int slave_tooth = -1, master_tooth = -1;
     int master_piece = -1;
     double master_t = 0;
+    unsigned int slave_code = 0;  ///< boundary segment code of the slave node (mesh::boundary::Code)
+    unsigned int master_code = 0; ///< segment code of the master piece
+    bool master_corner = false;   ///< projection at a master piece end without a tangent-continuous neighbour
+    Vec2 master_point;            ///< closest point on the undeformed master, rigidly placed [m], pair frame
+    /// Tooth of body `body` (1 or 2) in this pair of nodes/pieces.
+    int tooth(int body) const { return body == slave_body ? slave_tooth : master_tooth; }
     Vec2 x;                ///< slave node, rigidly placed (undeformed) [m], pair frame
     Vec2 normal;           ///< master outward normal, pair frame
     double gap = 0;        ///< normal gap at the solution [m] (< 0: penalty penetration)
@@ -112,12 +128,15 @@ namespace gearfem::contact
     double t_search = 0, t_compliance = 0, t_solve = 0; ///< wall times [s]
   };
 
-  /// Which slave nodes and master pieces take part at one position (empty: all).
+  /// Which nodes are slaves and which pieces may act as masters at one configuration.
   struct Scene
   {
     geometry::Placement placement[2]; ///< rigid placements at q = 0
-    std::vector<bool> slave_nodes;    ///< per slave surface node
-    std::vector<bool> master_pieces;  ///< per master mesh piece
+    /// Per body: the surface nodes that are slaves (checked against the other body). Both
+    /// empty: every node of ContactOptions::slave. A node should be a slave of at most one
+    /// zone: two passes over the same zone over-constrain a Lagrange solve.
+    std::vector<bool> slave_nodes[2];
+    std::vector<bool> master_pieces[2]; ///< per body mesh piece; empty: all
   };
 
   enum class Control
@@ -146,7 +165,23 @@ namespace gearfem::contact
     geometry::Placement placed(const Scene &scene, int body, double q) const;
 
   private:
-    struct Linearisation;
+    /// One slave node within the search distance of the other body.
+    struct Candidate
+    {
+      int S = 1, node = -1, face = -1; ///< slave body, its surface node, master face
+      Projection pr;                   ///< closest point on the master (master body frame)
+      std::vector<double> shape;       ///< master face shape values at the closest point
+      double g = 0;                    ///< current normal gap [m]
+      Vec2 n_pair;                     ///< master outward normal, pair frame
+    };
+    /// The contact problem linearised about the current state: g = ghat + a q + W lambda.
+    struct Linearisation
+    {
+      std::vector<std::vector<std::pair<int, double>>> B[2]; ///< per body, per candidate: (universe index, value)
+      Eigen::VectorXd a, ghat, D, lambda0;
+      Eigen::MatrixXd W;
+      double t_flex = 0; ///< flexibility columns computed for it [s]
+    };
     struct BodyCache
     {
       std::vector<unsigned int> dofs;             ///< universe: the surface DoFs
@@ -154,9 +189,20 @@ namespace gearfem::contact
       Eigen::MatrixXd C;                          ///< flexibility on the universe [m/N]
       std::vector<char> have;                     ///< column computed
       Eigen::VectorXd u;                          ///< current elastic displacement on the universe
+      std::vector<double> node_h;                 ///< longest face chord at each surface node [m]
     };
     ContactSolution solve_once(const Scene &scene, Control control, double value,
                                const ContactSolution *warm);
+    std::vector<Candidate> search(const Scene &scene, double q) const;
+    Linearisation linearise(const Scene &scene, const std::vector<Candidate> &cand, double q,
+                            const std::vector<double> &lambda_node, double &t_compliance);
+    void fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
+                       const Linearisation &lin, const Eigen::VectorXd &lambda,
+                       const Eigen::VectorXd &gap, const Scene &scene, double q) const;
+    /// (body, node) of every slave node of the scene.
+    std::vector<std::pair<int, int>> slaves(const Scene &scene) const;
+    /// Index of (body, node) in the per-solve node arrays.
+    int key(int body, int node) const { return body == 1 ? node : int(s1_->nodes().size()) + node; }
     void ensure_columns(int body, const std::vector<int> &universe_indices, double &seconds);
     Vec2 displacement(int body, int node) const;
     Vec2 interpolate(int body, int face, const std::vector<double> &shape) const;

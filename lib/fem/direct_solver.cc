@@ -214,4 +214,69 @@ namespace gearfem::fem
     MatDestroy(&B);
     MatDestroy(&Y);
   }
+
+  std::vector<double> DirectSolver::inverse_entries(const std::vector<unsigned int> &rows,
+                                                    const std::vector<unsigned int> &cols) const
+  {
+    if (!impl_->ready)
+      throw SolverError("DirectSolver::inverse_entries called before factorize");
+    std::vector<double> out(rows.size() * cols.size(), 0.0);
+    if (cols.empty() || rows.empty())
+      return out;
+    if (kind_ == SolverKind::umfpack)
+      {
+        const std::size_t n = impl_->umfpack.m();
+        std::vector<double> X(n * cols.size(), 0.0);
+        for (std::size_t j = 0; j < cols.size(); ++j)
+          X[j * n + cols[j]] = 1.0;
+        solve_block(X, static_cast<unsigned int>(cols.size()));
+        for (std::size_t j = 0; j < cols.size(); ++j)
+          for (std::size_t i = 0; i < rows.size(); ++i)
+            out[j * rows.size() + i] = X[j * n + rows[i]];
+        return out;
+      }
+    // spRHST(j, i) receives (A^T)^{-1}(j, i) = (A^{-1})(i, j).
+    PetscInt n = 0;
+    check(MatGetSize(impl_->A, &n, nullptr), "MatGetSize");
+    std::vector<PetscInt> nnz(std::size_t(n), 0);
+    for (const unsigned int j : cols)
+      nnz[j] = PetscInt(rows.size());
+    Mat S = nullptr;
+    check(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), &S), "MatCreateSeqAIJ");
+    std::vector<PetscInt> ri(rows.begin(), rows.end());
+    const std::vector<PetscScalar> zeros(rows.size(), 0.0);
+    for (const unsigned int j : cols)
+      {
+        const PetscInt row = PetscInt(j);
+        check(MatSetValues(S, 1, &row, PetscInt(ri.size()), ri.data(), zeros.data(), INSERT_VALUES),
+              "MatSetValues");
+      }
+    check(MatAssemblyBegin(S, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(S, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    PC pc;
+    Mat F;
+    check(KSPGetPC(impl_->ksp, &pc), "KSPGetPC");
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    check(MatMumpsGetInverseTranspose(F, S), "MatMumpsGetInverseTranspose");
+    // PETSc 3.18 leaves MUMPS in selected-entries mode (ICNTL(30) = 1, INFOG(1) = -47 on
+    // the next ordinary solve): restore dense right-hand sides and full solutions.
+    check(MatMumpsSetIcntl(F, 30, 0), "MatMumpsSetIcntl(30)");
+    check(MatMumpsSetIcntl(F, 20, 0), "MatMumpsSetIcntl(20)");
+    std::vector<int> where(std::size_t(n), -1);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      where[rows[i]] = int(i);
+    for (std::size_t j = 0; j < cols.size(); ++j)
+      {
+        PetscInt nc;
+        const PetscInt *ci;
+        const PetscScalar *v;
+        check(MatGetRow(S, PetscInt(cols[j]), &nc, &ci, &v), "MatGetRow");
+        for (PetscInt k = 0; k < nc; ++k)
+          if (where[ci[k]] >= 0)
+            out[j * rows.size() + std::size_t(where[ci[k]])] = v[k];
+        check(MatRestoreRow(S, PetscInt(cols[j]), &nc, &ci, &v), "MatRestoreRow");
+      }
+    MatDestroy(&S);
+    return out;
+  }
 } // namespace gearfem::fem

@@ -228,20 +228,16 @@ namespace gearfem::fem
   std::vector<double> ElasticBody::compliance_columns(const std::vector<unsigned int> &dofs,
                                                      const std::vector<unsigned int> &rows) const
   {
-    const std::size_t n = dof_handler_.n_dofs(), k = dofs.size();
-    std::vector<double> X(n * k, 0.0);
-    for (std::size_t j = 0; j < k; ++j)
-      if (!constrained_.at(dofs[j]))
-        X[j * n + dofs[j]] = 1.0;
-    solver_.solve_block(X, static_cast<unsigned int>(k));
-    std::vector<double> out(rows.size() * k);
+    const std::size_t k = dofs.size();
+    std::vector<double> out = solver_.inverse_entries(rows, dofs);
     for (std::size_t j = 0; j < k; ++j)
       for (std::size_t i = 0; i < rows.size(); ++i)
         {
-          const double v = X[j * n + rows[i]];
+          double &v = out[j * rows.size() + i];
           if (!std::isfinite(v))
             throw SolverError("the linear solver returned a non-finite compliance");
-          out[j * rows.size() + i] = constrained_[rows[i]] ? 0.0 : v;
+          if (constrained_.at(dofs[j]) || constrained_[rows[i]])
+            v = 0.0;
         }
     return out;
   }

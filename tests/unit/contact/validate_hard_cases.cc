@@ -62,7 +62,7 @@ namespace
         r.max_pairs = std::max(r.max_pairs, p.n_pairs);
         for (const auto &q : p.pairs)
           {
-            r.corner_pairs += q.share > 0.01 && !q.on_involute;
+            r.corner_pairs += q.share > 0.01 && q.edge;
             r.unresolved += q.share > 0.05 && !q.resolved;
             r.pmax = std::max(r.pmax, q.p_max);
           }
