@@ -150,12 +150,43 @@ def point_angle(loa, sweep, point):
     return 0.0 if point == 3 else None  # roll angle 0 is C by definition
 
 
+def mesh_pitch(loa, sweep):
+    """Angular pitch of the pinion [deg]: D - A (one base pitch along the line of action)."""
+    a, dd = point_angle(loa, sweep, 1), point_angle(loa, sweep, 4)
+    return dd - a if a is not None and dd is not None and dd > a else None
+
+
 def plot_ste(d, title, sweep, loa, ts):
+    """STE over the computed roll angles (solid), and, when they span one mesh pitch, its
+    periodic continuation over A-E (dashed: STE repeats with the pinion's angular pitch)."""
     fig, ax = plt.subplots(figsize=(8, 4.5))
+    pitch = mesh_pitch(loa, sweep)
+    a, e = point_angle(loa, sweep, 1), point_angle(loa, sweep, 5)
+    lo_all, hi_all = [], []
     for t, c in zip(ts, colours(len(ts))):
         x, y = by_torque(sweep, t, "roll angle", "STE")
         ax.plot(x, y, style(len(x)), color=c, ms=4, label=torque_label(t))
+        lo_all.append(x.min())
+        hi_all.append(x.max())
+        span = x.max() - x.min() if len(x) > 1 else 0
+        if pitch and a is not None and e is not None and len(x) > 2 and span >= 0.9 * pitch:
+            # One pitch computed: repeat it over A-E, beside the computed range.
+            step = span / (len(x) - 1)
+            if span + step >= 0.999 * pitch:
+                for k in range(-3, 4):
+                    if k == 0:
+                        continue
+                    xs = x + k * pitch
+                    m = (xs >= a - 1e-9) & (xs <= e + 1e-9)
+                    if np.any(m):
+                        ax.plot(xs[m], y[m], "--", color=c, lw=0.9, alpha=0.6)
+                lo_all[-1], hi_all[-1] = min(a, x.min()), max(e, x.max())
     point_lines(ax, loa)
+    if lo_all:
+        pad = 0.02 * (max(hi_all) - min(lo_all) or 1)
+        ax.set_xlim(min(lo_all) - pad, max(hi_all) + pad)
+    if pitch:
+        ax.plot([], [], "k--", lw=0.9, alpha=0.6, label="periodic continuation (one pitch computed)")
     ax.set_xlabel(sweep.label("roll angle"))
     ax.set_ylabel(sweep.label("STE"))
     ax.set_title(title + ": static transmission error", pad=16)
@@ -236,6 +267,16 @@ def plot_pressure(d, title, sweep, pairs, pressure, loa, ts):
     for ax, point in zip(axes, (3, 4)):
         name = POINTS[point]
         target = point_angle(loa, sweep, point)
+        # A point beyond the computed roll angles is the same mesh state one pitch earlier
+        # (D = A + pitch): use that position.
+        pitch = mesh_pitch(loa, sweep)
+        original = target
+        if target is not None and pitch and sweep.n:
+            lo, hi = np.nanmin(sweep["roll angle"]), np.nanmax(sweep["roll angle"])
+            while target > hi + 1e-9 and target - pitch >= lo - 1e-9:
+                target -= pitch
+            while target < lo - 1e-9 and target + pitch <= hi + 1e-9:
+                target += pitch
         ax.set_xlabel(pressure.label("s") if have_p else "s [mm]")
         ax.set_ylabel(pressure.label("p") if have_p else "p [MPa]")
         ax.grid(True, alpha=0.3)
@@ -271,8 +312,14 @@ def plot_pressure(d, title, sweep, pairs, pressure, loa, ts):
                     continue
                 order = np.argsort(r["s"], kind="stable")
                 ls = ["-", "-.", (0, (5, 1)), (0, (3, 1, 1, 1))][j % 4]
-                ax.plot(r["s"][order], r["p"][order], ls=ls, color=c, lw=1.2,
-                        label=f"{torque_label(t)}, tooth {tooth} ({roll[pos]:.2f} deg)")
+                edge = False
+                if pairs is not None and pairs.has("edge contact"):
+                    e_rows = pairs.subset(same(pairs["torque"], t) & (np.rint(pairs["position"]) == pos)
+                                          & (np.rint(pairs["pinion tooth"]) == tooth))
+                    edge = bool(e_rows.n and e_rows["edge contact"][0] > 0.5)
+                ax.plot(r["s"][order], r["p"][order], ls=ls, color=c, lw=1.2, marker=".", ms=4,
+                        label=f"{torque_label(t)}, tooth {tooth} ({roll[pos]:.2f} deg)"
+                        + (", tip-edge contact (not Hertzian)" if edge else ""))
                 plotted = True
                 if have_hertz:
                     h = pairs.subset(same(pairs["torque"], t)
@@ -284,8 +331,9 @@ def plot_pressure(d, title, sweep, pairs, pressure, loa, ts):
                         ax.plot(s, p0 * np.sqrt(np.clip(1 - (s / a) ** 2, 0, None)), ":",
                                 color=c, lw=1.2)
         where = ", ".join(dict.fromkeys(f"{a:.2f}" for a in angles))
-        ax.set_title(f"nearest {name} ({target:.2f} deg): roll angle {where} deg"
-                     if angles else f"nearest {name} ({target:.2f} deg)")
+        shifted = "" if abs(target - original) < 1e-9 else f", periodic image of {original:.2f} deg"
+        ax.set_title(f"nearest {name} ({target:.2f} deg{shifted}): roll angle {where} deg"
+                     if angles else f"nearest {name} ({target:.2f} deg{shifted})", fontsize=10)
         if plotted:
             handles, labels = ax.get_legend_handles_labels()
             if have_hertz:

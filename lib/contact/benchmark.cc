@@ -24,7 +24,7 @@ namespace gearfem::contact
     const auto positions = in.positions();
     const double T       = in.solve.torques.front();
     out << "solve benchmark: " << prm_file.filename().string() << ", z " << in.pair->gear(1).teeth() << "/"
-        << in.pair->gear(2).teeth() << ", h_contact " << in.mesh[0].h_contact * 1e3 << " mm, Q"
+        << in.pair->gear(2).teeth() << ", h_contact " << mesh::contact_size(in.mesh[0], in.pair->gear(1).parameters().rack.module) * 1e3 << " mm, Q"
         << in.fe.degree << ", " << positions.size() << " positions at T1 = " << T << " N m\n\n"
         << "| method | DoFs | mesh [s] | set-up [s] | search [s/pos] | flexibility [s/pos] | contact solve "
            "[s/pos] | post [s/pos] | total [s/pos] | sweep [s] | geometry it/pos | active-set it/pos | "

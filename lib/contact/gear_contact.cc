@@ -100,7 +100,8 @@ namespace gearfem::contact
             const auto code = bd::code_of(nd.boundary_id);
             slave_capable_[i].push_back(code == bd::flank_drive || code == bd::tip || code == bd::tip_round_drive);
           }
-        const double h = mp[i].h_contact / std::pow(2.0, fo_refinements(fe, mp[i]));
+        const double m_n = pair.gear(i + 1).parameters().rack.module;
+        const double h   = mesh::contact_size(mp[i], m_n) / std::pow(2.0, fo_refinements(fe, mp[i]));
         h_reach_       = std::max(h_reach_, h);
       }
     // Tooth of each gear at C when phi1 = 0, and the sense of each body's rotation.

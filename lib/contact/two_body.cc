@@ -480,25 +480,25 @@ namespace gearfem::contact
       ensure_columns(b, used[b - 1], t_compliance);
     L.t_flex = t_compliance - t0;
 
-    // W = sum_b B_b^T C_b B_b on the used universe entries.
+    // W = sum_b B_b^T C_b B_b. B has 2 (slave) or 2 (p + 1) (master face) entries per
+    // column, so W is built from the columns C_b B_b (contiguous columns of the cache):
+    // O(u m) instead of the O(u^2 m) of a dense product. Symmetrised (C is symmetric to
+    // round-off).
     L.W = Eigen::MatrixXd::Zero(m, m);
+    Eigen::VectorXd t;
     for (int b = 0; b < 2; ++b)
-      {
-        const auto &u = used[b];
-        std::vector<int> pos(cache_[b].dofs.size(), -1);
-        for (std::size_t i = 0; i < u.size(); ++i)
-          pos[u[i]] = int(i);
-        Eigen::MatrixXd Bb = Eigen::MatrixXd::Zero(u.size(), m);
-        for (int k = 0; k < m; ++k)
+      for (int k = 0; k < m; ++k)
+        {
+          if (L.B[b][k].empty())
+            continue;
+          t.setZero(cache_[b].C.rows());
           for (const auto &[i, v] : L.B[b][k])
-            Bb(pos[i], k) += v;
-        Eigen::MatrixXd Cs(u.size(), u.size());
-        for (std::size_t i = 0; i < u.size(); ++i)
-          for (std::size_t j = 0; j < u.size(); ++j)
-            Cs(i, j) = cache_[b].C(u[i], u[j]);
-        Cs = 0.5 * (Cs + Cs.transpose()).eval();
-        L.W.noalias() += Bb.transpose() * Cs * Bb;
-      }
+            t.noalias() += v * cache_[b].C.col(i);
+          for (int l = 0; l < m; ++l)
+            for (const auto &[j, w] : L.B[b][l])
+              L.W(l, k) += w * t[j];
+        }
+    L.W = 0.5 * (L.W + L.W.transpose()).eval();
     return L;
   }
 

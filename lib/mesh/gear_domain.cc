@@ -15,13 +15,21 @@ namespace gearfem::mesh
     constexpr double pi = 3.14159265358979323846;
   } // namespace
 
+  double contact_size(const GearMeshParameters &p, double module)
+  {
+    return p.h_contact > 0 ? p.h_contact : module / 30.0;
+  }
+
+  double coast_size(const GearMeshParameters &p) { return p.h_coast > 0 ? p.h_coast : p.h_fillet; }
+
   void GearMeshParameters::validate() const
   {
     if (model == Model::sector && sector_teeth < 1)
       throw InputError("Mesh/Sector teeth", std::to_string(sector_teeth), ">= 1");
-    require_greater("Mesh/h_contact", h_contact * 1e3, 0.0, "mm");
+    if (!(h_contact >= 0))
+      throw InputError("Mesh/h_contact", to_string_g(h_contact * 1e3) + " mm", ">= 0 (0: m_n/30)");
     if (!(h_coast >= 0) || h_coast > h_body)
-      throw InputError("Mesh/h_coast", to_string_g(h_coast * 1e3) + " mm", "[0, h_body] (0: h_contact)");
+      throw InputError("Mesh/h_coast", to_string_g(h_coast * 1e3) + " mm", "[0, h_body] (0: h_fillet)");
     require_greater("Mesh/h_fillet", h_fillet * 1e3, 0.0, "mm");
     require_greater("Mesh/h_body", h_body * 1e3, 0.0, "mm");
     if (h_contact > h_body)
@@ -179,7 +187,7 @@ namespace gearfem::mesh
             const bool coast = sg.side == geometry::Side::coast &&
                                (sg.type == geometry::SegmentType::flank ||
                                 sg.type == geometry::SegmentType::tip_rounding);
-            const double h_flank = coast && p.h_coast > 0 ? p.h_coast : p.h_contact;
+            const double h_flank = coast ? coast_size(p) : contact_size(p, m);
             piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
             // Split fine flanks at the requested radii (bisection on the radius).
             std::vector<double> cuts;
@@ -188,7 +196,7 @@ namespace gearfem::mesh
                 {
                   double a = sg.t0, b = sg.t1;
                   const double ra = sg.curve->point(a).norm(), rb = sg.curve->point(b).norm();
-                  if (!(r > std::min(ra, rb) + 1e-3 * p.h_contact && r < std::max(ra, rb) - 1e-3 * p.h_contact))
+                  if (!(r > std::min(ra, rb) + 1e-3 * contact_size(p, m) && r < std::max(ra, rb) - 1e-3 * contact_size(p, m)))
                     continue;
                   for (int it = 0; it < 200; ++it)
                     {

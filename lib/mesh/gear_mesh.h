@@ -21,9 +21,9 @@ namespace gearfem::mesh
     };
     Model model             = Model::full_gear;
     int sector_teeth        = 3;       ///< N (sector only), >= 1
-    double h_contact        = 0.25e-3; ///< element size on the flanks of the fine teeth [m]
+    double h_contact        = 0.25e-3; ///< element size on the drive flanks and tips of the fine teeth [m]; 0: m_n/30
     double h_fillet         = 0.25e-3; ///< element size on the fillets and root of the fine teeth [m]
-    double h_coast          = 0;       ///< size on the coast flank and coast tip rounding of the fine teeth [m]; 0: h_contact
+    double h_coast          = 0;       ///< size on the coast flank and coast tip rounding of the fine teeth [m]; 0: h_fillet
     double h_body           = 3e-3;    ///< largest element size inside [m]
     double h_tooth          = 0;       ///< size on the other teeth [m]; 0: min(h_body, 0.4 m)
     double growth           = 1.2;     ///< size growth ratio away from fine boundaries (> 1)
@@ -44,6 +44,12 @@ namespace gearfem::mesh
     void validate() const;
   };
 
+  /// Element size on the drive flanks and tips of the fine teeth [m]: h_contact, or m_n/30
+  /// when it is 0 (about 6 nodes of a quadratic mesh across a Hertz patch at a typical
+  /// design stress, which keeps the STE ripple of the node-to-segment contact below 0.1 %).
+  double contact_size(const GearMeshParameters &p, double module);
+  /// Element size on the coast flanks of the fine teeth [m]: h_coast, or h_fillet when 0.
+  double coast_size(const GearMeshParameters &p);
   /// Tooth indices (0 <= k < z) that get fine sizes.
   std::vector<int> fine_teeth(const GearMeshParameters &p, int z);
   /// Tooth indices of the model in outline order (all z, or the N sector teeth around 0).

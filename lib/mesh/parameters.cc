@@ -20,13 +20,14 @@ namespace gearfem::mesh
                       "Full gear (all z teeth, bore) or a sector of N teeth with a rim below the "
                       "root circle and radial cut edges (seed 001's 3-tooth model).");
     prm.declare_entry("Sector teeth", "3", Integer(), "N, teeth of a sector model. Units: none. Allowed: >= 1.");
-    prm.declare_entry("h_contact", "0.25", Double(),
-                      "Element size on the flanks (and tip) of the fine teeth. Units: mm. "
-                      "Allowed: > 0 and <= h_body.");
+    prm.declare_entry("h_contact", "0", Double(),
+                      "Element size on the drive flanks (and tip) of the fine teeth; 0: m_n/30 "
+                      "(0.1 mm at m 3: six nodes across a Hertz patch, STE ripple below 0.1 %, "
+                      "see docs/contact.md). Units: mm. Allowed: >= 0 and <= h_body.");
     prm.declare_entry("h_coast", "0", Double(),
                       "Element size on the coast flanks (and coast tip rounding) of the fine "
-                      "teeth; 0: h_contact. A static drive-side analysis can use h_fillet here "
-                      "and refine only the loaded flanks. Units: mm. Allowed: >= 0, <= h_body.");
+                      "teeth, which carry no load in a drive-side analysis; 0: h_fillet. Units: mm. "
+                      "Allowed: >= 0, <= h_body.");
     prm.declare_entry("h_fillet", "0.25", Double(),
                       "Element size on the fillets and root of the fine teeth. Units: mm. "
                       "Allowed: > 0 and <= h_body.");
