@@ -1,5 +1,6 @@
 // Gear body domains (full gear or sector) from a ToothProfile.
 #include "base/errors.h"
+#include "base/number.h"
 #include "mesh/gear_mesh.h"
 
 #include <algorithm>
@@ -40,21 +41,14 @@ namespace gearfem::mesh
                        ">= 0 (0: automatic)");
     if (fine_teeth != "auto")
       {
-        std::stringstream s(fine_teeth);
-        std::string item;
-        while (std::getline(s, item, ','))
+        try
           {
-            std::size_t pos = 0;
-            try
-              {
-                (void)std::stoi(item, &pos);
-              }
-            catch (...)
-              {
-                pos = 0;
-              }
-            if (pos == 0)
+            if (parse_int_list("Mesh/Fine teeth", fine_teeth).empty())
               throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
+          }
+        catch (const InputError &)
+          {
+            throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
           }
       }
   }
@@ -91,10 +85,8 @@ namespace gearfem::mesh
       }
     else
       {
-        std::stringstream in(p.fine_teeth);
-        std::string item;
-        while (std::getline(in, item, ','))
-          s.insert(mod(std::stoi(item), z));
+        for (const int k : parse_int_list("Mesh/Fine teeth", p.fine_teeth))
+          s.insert(mod(k, z));
       }
     return {s.begin(), s.end()};
   }
