@@ -115,6 +115,48 @@ namespace gearfem::mesh
     return ri;
   }
 
+  namespace
+  {
+  /// Named stops for meshes that would not resolve the tooth or would not fit one machine.
+  void check_resolution(const GearMeshParameters &p, const geometry::ToothProfile &tooth,
+                        double ri, double h_coarse, int n_teeth, int n_fine)
+  {
+    // A fine tooth needs a few elements along its flank (the active flank is shorter than
+    // the whole depth 2.25 m): with h_contact or h_fillet above the module, gmsh still
+    // returns a mesh, but of degenerate cells (angles of 2 and 178 deg at m = 0.1 mm,
+    // h = 0.5 mm) that do not represent the tooth.
+    const double m = tooth.parameters().rack.module;
+    const auto mm  = [](double x) { return to_string_g(x * 1e3) + " mm"; };
+    if (p.h_contact > m)
+      throw InputError("Mesh/h_contact", mm(p.h_contact), "<= module = " + mm(m),
+                       "fewer than ~2 elements along the flank do not resolve the tooth");
+    if (p.h_fillet > m)
+      throw InputError("Mesh/h_fillet", mm(p.h_fillet), "<= module = " + mm(m),
+                       "fewer than ~2 elements along the fillet do not resolve the tooth");
+    if (p.h_tooth > m)
+      throw InputError("Mesh/h_tooth", mm(p.h_tooth), "<= module = " + mm(m) + " (0: automatic)");
+    // Estimated number of quadrilaterals: the body ring (tip to bore) at h_body, plus each
+    // tooth (area ~ 2.25 m x pi m / 2) at its own size. The limit keeps a mesh within the
+    // memory and time of one machine (a full gear of 10000 teeth at the default sizes would
+    // need ~1e8 cells): beyond it, stop with the estimate instead of meshing for hours.
+    const double limit      = 2e6;
+    const double pi_        = 3.14159265358979323846;
+    const double tooth_area = 2.25 * m * pi_ * m / 2;
+    const double h_fine     = std::min(p.h_contact, p.h_fillet);
+    const double fraction   = double(n_teeth) / tooth.teeth();
+    const double ring       = fraction * pi_ * (std::pow(tooth.radii().root, 2) - std::pow(ri, 2));
+    const double estimate   = ring / (p.h_body * p.h_body) + n_fine * tooth_area / (h_fine * h_fine) +
+                            (n_teeth - n_fine) * tooth_area / (h_coarse * h_coarse);
+    if (!(estimate <= limit))
+      throw InputError(p.model == GearMeshParameters::Model::full_gear ? "Mesh/Model" : "Mesh/h_body",
+                       p.model == GearMeshParameters::Model::full_gear ?
+                         "full gear (" + std::to_string(tooth.teeth()) + " teeth)" :
+                         mm(p.h_body),
+                       "a mesh of <= 2e6 cells (estimated: " + to_string_g(estimate) + ")",
+                       "use Model = sector, or larger h_body/h_tooth");
+  }
+  } // namespace
+
   boundary::Code segment_code(geometry::SegmentType type, geometry::Side side)
   {
     using geometry::SegmentType;
@@ -144,6 +186,7 @@ namespace gearfem::mesh
     const std::vector<int> fine = fine_teeth(p, z);
     const std::set<int> fine_set(fine.begin(), fine.end());
     const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
+    check_resolution(p, tooth, ri, h_coarse, int(model_teeth(p, z).size()), int(fine.size()));
 
     Domain d;
     d.h_body = p.h_body;
