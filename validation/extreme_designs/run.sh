@@ -31,7 +31,12 @@ run_case() {
   local rc=$? t1=$(date +%s.%N)
   local what
   if [ $rc -eq 0 ]; then
-    what=$(grep -hE "contact ratio|eps_alpha|STE|sigma_H|elements|quads|mean" "$work/$name.out" | head -2 | tr '\n' ' ' | cut -c1-150)
+    what=$(grep -hE "contact ratio|eps_alpha|STE|sigma_H|quadrilaterals|mean" "$work/$name.out" | head -2 | tr '\n' ' ' | cut -c1-150)
+    if [ -f "$work/out_$name/sweep.csv" ]; then
+      # STE and F_n of every row of the solve sweep.
+      what=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "STE [um]") s = i; if ($i == "F_n [N]") f = i; if ($i == "torque [N m]") t = i }; next }
+                      { printf "T %s N m: STE %.5g um, F_n %.5g N; ", $t, $s, $f }' "$work/out_$name/sweep.csv")
+    fi
     if grep -rqiE "(^|,)\s*[-+]?(nan|inf)" "$work/out_$name"/*.csv 2> /dev/null; then
       what="NaN/inf in a CSV file"; rc=99
     fi
