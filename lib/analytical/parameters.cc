@@ -1,6 +1,7 @@
 #include "analytical/parameters.h"
 
 #include "base/errors.h"
+#include "params/checked.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -57,23 +58,23 @@ namespace gearfem::analytical
   {
     RatingInput in;
     prm.enter_subsection("Rating");
-    in.torques = dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get("Pinion torques")));
-    in.speed = prm.get_double("Pinion speed");
-    in.K_o = prm.get_double("AGMA overload factor");
-    in.K_v = prm.get_double("AGMA dynamic factor");
-    in.K_s = prm.get_double("AGMA size factor");
-    in.Z_R = prm.get_double("AGMA surface condition factor");
-    in.K_B = prm.get_double("AGMA rim thickness factor");
+    in.torques = params::get_doubles(prm, "Pinion torques");
+    in.speed = params::get_double(prm, "Pinion speed");
+    in.K_o = params::get_double(prm, "AGMA overload factor");
+    in.K_v = params::get_double(prm, "AGMA dynamic factor");
+    in.K_s = params::get_double(prm, "AGMA size factor");
+    in.Z_R = params::get_double(prm, "AGMA surface condition factor");
+    in.K_B = params::get_double(prm, "AGMA rim thickness factor");
     in.enclosure = agma::enclosure_from_string(prm.get("AGMA gear unit class"));
-    in.K_H = prm.get_double("AGMA load distribution factor");
-    in.tool.n_o = prm.get_double("AGMA tool teeth");
-    in.tool.x_o = prm.get_double("AGMA tool addendum modification");
-    in.K_A = prm.get_double("Application factor");
-    in.K_v_iso = prm.get_double("ISO dynamic factor");
-    in.K_Hbeta = prm.get_double("ISO face load factor");
-    in.accuracy_grade = prm.get_integer("ISO accuracy grade");
-    in.case_hardened = prm.get_bool("Case hardened");
-    in.sigma_Hlim = prm.get_double("Contact fatigue limit") * 1e6;
+    in.K_H = params::get_double(prm, "AGMA load distribution factor");
+    in.tool.n_o = params::get_double(prm, "AGMA tool teeth");
+    in.tool.x_o = params::get_double(prm, "AGMA tool addendum modification");
+    in.K_A = params::get_double(prm, "Application factor");
+    in.K_v_iso = params::get_double(prm, "ISO dynamic factor");
+    in.K_Hbeta = params::get_double(prm, "ISO face load factor");
+    in.accuracy_grade = params::get_integer(prm, "ISO accuracy grade");
+    in.case_hardened = params::get_bool(prm, "Case hardened");
+    in.sigma_Hlim = params::get_double(prm, "Contact fatigue limit") * 1e6;
     prm.leave_subsection();
     if (in.torques.empty())
       throw InputError("Rating/Pinion torques", "(empty)", "one or more values > 0 N m");
@@ -121,10 +122,10 @@ namespace gearfem::analytical
     a.options.model = stiffness_model_from_string(prm.get("Stiffness model"));
     a.options.odonnell = prm.get("ODonnell constant") == "seed000" ? ODonnellConstant::seed000_50_over_2pi :
                                                                    ODonnellConstant::cornell_50_over_3pi;
-    a.bore_radius1 = 0.5e-3 * prm.get_double("Bore diameter 1");
-    a.bore_radius2 = 0.5e-3 * prm.get_double("Bore diameter 2");
-    a.positions = prm.get_integer("Mesh positions");
-    a.corner_contact = prm.get_bool("Corner contact");
+    a.bore_radius1 = 0.5e-3 * params::get_double(prm, "Bore diameter 1");
+    a.bore_radius2 = 0.5e-3 * params::get_double(prm, "Bore diameter 2");
+    a.positions = params::get_integer(prm, "Mesh positions");
+    a.corner_contact = params::get_bool(prm, "Corner contact");
     prm.leave_subsection();
     if (a.options.model == StiffnessModel::potential_energy && (a.bore_radius1 <= 0 || a.bore_radius2 <= 0))
       throw InputError("Analytical/Bore diameter 1, 2", "0 mm", "> 0 mm",

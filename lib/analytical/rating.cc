@@ -4,6 +4,7 @@
 #include "analytical/iso6336.h"
 #include "base/atomic_file.h"
 #include "base/errors.h"
+#include "base/number.h"
 
 #include <cmath>
 #include <iomanip>
@@ -282,7 +283,10 @@ namespace gearfem::analytical
           }
         s << "| " << r.quantity << " | " << r.symbol << " | " << r.clause << " | " << r.unit << " |";
         for (double v : r.values)
-          s << " " << std::setprecision(6) << v << " |";
+          {
+            require_finite_output(v, file.string(), "row '" + r.quantity + "'");
+            s << " " << std::setprecision(6) << v << " |";
+          }
         s << "\n";
       }
     write_file_atomically(file, s.str());
@@ -301,7 +305,10 @@ namespace gearfem::analytical
         s << q(r.standard) << "," << q(r.quantity) << "," << q(r.symbol) << "," << q(r.clause) << ","
           << q(r.unit);
         for (double v : r.values)
-          s << "," << std::setprecision(10) << v;
+          {
+            require_finite_output(v, file.string(), "row '" + r.quantity + "'");
+            s << "," << std::setprecision(10) << v;
+          }
         s << "\n";
       }
     write_file_atomically(file, s.str());

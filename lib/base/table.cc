@@ -2,6 +2,7 @@
 
 #include "base/atomic_file.h"
 #include "base/errors.h"
+#include "base/number.h"
 
 #include <cmath>
 #include <fstream>
@@ -58,9 +59,7 @@ namespace gearfem
       {
         for (std::size_t c = 0; c < r.size(); ++c)
           {
-            if (!std::isfinite(r[c]))
-              throw std::runtime_error("Table: non-finite value in column '" + names_[c] +
-                                       "' while writing " + file.string());
+            require_finite_output(r[c], file.string(), "column '" + h[c] + "'");
             f << (c ? "," : "") << r[c];
           }
         f << "\n";
@@ -77,8 +76,10 @@ namespace gearfem
     std::string line;
     std::vector<std::vector<double>> rows;
     bool first = true;
+    std::size_t line_number = 0;
     while (std::getline(in, line))
       {
+        ++line_number;
         if (line.empty())
           continue;
         std::stringstream ss(line);
@@ -93,7 +94,10 @@ namespace gearfem
           }
         std::vector<double> row;
         while (std::getline(ss, cell, ','))
-          row.push_back(std::stod(cell));
+          row.push_back(parse_double("CSV file '" + file.string() + "', line " +
+                                       std::to_string(line_number) + ", column " +
+                                       std::to_string(row.size() + 1),
+                                     cell));
         rows.push_back(row);
       }
     return rows;

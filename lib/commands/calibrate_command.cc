@@ -5,6 +5,7 @@
 #include "analytical/calibration.h"
 #include "analytical/from_geometry.h"
 #include "base/errors.h"
+#include "params/checked.h"
 #include "base/atomic_file.h"
 #include "base/table.h"
 #include "commands/command.h"
@@ -150,12 +151,12 @@ namespace gearfem::commands
       const auto files = dealii::Utilities::split_string_list(prm.get("Results files"), ',');
       const std::string model = prm.get("Model");
       const auto fit_set = dealii::Utilities::split_string_list(prm.get("Fit factors"), ',');
-      const bool corner  = prm.get_bool("Corner contact");
-      const double rho0  = prm.get_double("Corner radius") * 1e-3;
-      const int n_theta  = prm.get_integer("Table positions");
-      const int n_load   = prm.get_integer("Table loads");
-      const double lf    = prm.get_double("Table load factor");
-      const double b_um  = prm.get_double("Backlash");
+      const bool corner  = params::get_bool(prm, "Corner contact");
+      const double rho0  = params::get_double(prm, "Corner radius") * 1e-3;
+      const int n_theta  = params::get_integer(prm, "Table positions");
+      const int n_load   = params::get_integer(prm, "Table loads");
+      const double lf    = params::get_double(prm, "Table load factor");
+      const double b_um  = params::get_double(prm, "Backlash");
       prm.leave_subsection();
       if (files.empty())
         throw InputError("Calibration/Results files", "(empty)", "at least one results.h5 of `gearfem solve`");

@@ -3,6 +3,7 @@
 #include "base/atomic_file.h"
 #include "base/errors.h"
 #include "commands/command.h"
+#include "params/checked.h"
 #include "gearfem/version.h"
 
 #include <deal.II/base/exceptions.h>
@@ -158,6 +159,10 @@ namespace gearfem::commands
               declare_output(all);
               all.parse_input(ctx.input_file.string(), "", false, false);
               prm.parse_input(ctx.input_file.string(), "", true, false);
+              // parse_input() does not match a value containing '{' against its pattern,
+              // and Patterns::Double accepts subnormal numbers that get_double() refuses
+              // (see params/checked.h): check every entry strictly, naming "Section/Entry".
+              params::check_entries(all);
             }
           catch (const dealii::ExceptionBase &e)
             {
@@ -288,7 +293,18 @@ namespace gearfem::commands
       }
     catch (const dealii::ExceptionBase &e)
       {
-        std::cerr << "gearfem: internal error: " << exception_text(e) << std::endl;
+        // Last line of defence: a ParameterHandler conversion that a command still makes
+        // without params::get_* ("Can't convert the parameter value <...> for entry <...>")
+        // is bad input, not a bug of the computation. Every entry is read through
+        // params/checked.h, so this is not expected to trigger.
+        const std::string text = exception_text(e);
+        if (text.find("the parameter value") != std::string::npos ||
+            text.find("for entry <") != std::string::npos)
+          {
+            std::cerr << "gearfem: error: invalid parameter value: " << text << std::endl;
+            return 2;
+          }
+        std::cerr << "gearfem: internal error: " << text << std::endl;
         return 1;
       }
     catch (const std::exception &e)

@@ -2,6 +2,7 @@
 #include "commands/hdf5_tables.h"
 
 #include "base/atomic_file.h"
+#include "base/number.h"
 
 #include <deal.II/base/hdf5.h>
 
@@ -33,7 +34,11 @@ namespace gearfem::commands
             {
               std::vector<double> col(table.n_rows());
               for (std::size_t i = 0; i < table.n_rows(); ++i)
-                col[i] = table.row(i)[c];
+                {
+                  col[i] = table.row(i)[c];
+                  require_finite_output(col[i], file.string(),
+                                        "dataset '" + name + "/" + table.headers()[c] + "'");
+                }
               g.write_dataset(dataset_name(table.headers()[c]), col);
             }
         }

@@ -2,6 +2,8 @@
 #include "contact/parameters.h"
 
 #include "base/errors.h"
+#include "base/number.h"
+#include "params/checked.h"
 #include "fem/parameters.h"
 #include "geometry/parameters.h"
 #include "mesh/parameters.h"
@@ -9,6 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gearfem::contact
@@ -18,24 +21,7 @@ namespace gearfem::contact
     const double pi = 3.14159265358979323846;
     std::vector<double> doubles(const std::string &entry, const std::string &text)
     {
-      std::vector<double> v;
-      for (const auto &s : dealii::Utilities::split_string_list(text, ','))
-        {
-          if (s.empty())
-            continue;
-          try
-            {
-              std::size_t pos = 0;
-              v.push_back(std::stod(s, &pos));
-              if (pos != s.size())
-                throw std::invalid_argument(s);
-            }
-          catch (const std::exception &)
-            {
-              throw InputError(entry, text, "a comma-separated list of numbers");
-            }
-        }
-      return v;
+      return parse_double_list(entry, text);
     }
   } // namespace
 
@@ -83,16 +69,16 @@ namespace gearfem::contact
     ContactOptions o;
     prm.enter_subsection("Contact");
     o.method                    = method_from_string(prm.get("Method"));
-    o.penalty_factor            = prm.get_double("Penalty factor");
-    o.search_distance           = prm.get_double("Search distance") * 1e-3;
-    o.tolerance                 = prm.get_double("Tolerance");
-    o.max_active_set_iterations = prm.get_integer("Max active-set iterations");
-    o.max_geometry_iterations   = prm.get_integer("Max geometry iterations");
-    o.max_load_cuts             = prm.get_integer("Max load cuts");
+    o.penalty_factor            = params::get_double(prm, "Penalty factor");
+    o.search_distance           = params::get_double(prm, "Search distance") * 1e-3;
+    o.tolerance                 = params::get_double(prm, "Tolerance");
+    o.max_active_set_iterations = params::get_integer(prm, "Max active-set iterations");
+    o.max_geometry_iterations   = params::get_integer(prm, "Max geometry iterations");
+    o.max_load_cuts             = params::get_integer(prm, "Max load cuts");
     const std::string slave     = prm.get("Slave body");
     o.slave = slave == "auto" ? (E2 < E1 ? 2 : 1) : std::stoi(slave);
     o.per_zone_slaves           = prm.get("Slave selection") == "per zone";
-    const double mu = prm.get_double("Friction coefficient");
+    const double mu = params::get_double(prm, "Friction coefficient");
     prm.leave_subsection();
     if (mu != 0.0)
       throw InputError("Contact/Friction coefficient", to_string_g(mu), "0 (frictionless only)",
@@ -134,8 +120,8 @@ namespace gearfem::contact
     const std::string pos = prm.get("Positions");
     p.positions   = pos == "cycle" ? SolveParameters::Positions::cycle :
                     pos == "named" ? SolveParameters::Positions::named : SolveParameters::Positions::list;
-    p.n_positions = prm.get_integer("Number of positions");
-    p.pitches     = prm.get_double("Pitches");
+    p.n_positions = params::get_integer(prm, "Number of positions");
+    p.pitches     = params::get_double(prm, "Pitches");
     const std::string start = prm.get("Start");
     if (start == "A")
       p.start_at_A = true;
@@ -154,8 +140,8 @@ namespace gearfem::contact
     const std::string vtu = prm.get("VTU");
     p.vtu       = vtu == "none" ? SolveParameters::Vtu::none :
                   vtu == "all" ? SolveParameters::Vtu::all : SolveParameters::Vtu::named;
-    p.vtu_scale = prm.get_double("VTU displacement scale");
-    p.plots     = prm.get_bool("Plots");
+    p.vtu_scale = params::get_double(prm, "VTU displacement scale");
+    p.plots     = params::get_bool(prm, "Plots");
     prm.leave_subsection();
 
     if (p.positions == SolveParameters::Positions::cycle && p.n_positions < 1)
@@ -173,6 +159,41 @@ namespace gearfem::contact
     require_greater("Solve/VTU displacement scale", p.vtu_scale, 0.0, "-");
     return p;
   }
+
+  namespace
+  {
+  void check_small_strain(const geometry::GearPair &pair, const geometry::PairMaterial &pm,
+                          const std::vector<double> &torques)
+  {
+    // Line-contact Hertz estimate at the pitch point C with all the torque on one pair
+    // (Johnson 1985, eq. 4.45): p0 = sqrt(w E* / (pi R*)), w = F_n / b, F_n = T / r_b1,
+    // 1/E* = 1/E'_1 + 1/E'_2 (E' of the plane model), 1/R* = 1/rho_1 + 1/rho_2 at C.
+    // The contact strain is of the order p0 / E*; the solver is linear elastic with small
+    // strains and small rotations, so a torque for which p0 / E* exceeds 5 % (p0 ~ 5 GPa
+    // for steel, several times any yield stress) is refused, stating the largest torque.
+    const double limit = 0.05;
+    const double E1 = pm.gear1.effective_modulus(pm.plane_strain);
+    const double E2 = pm.gear2.effective_modulus(pm.plane_strain);
+    const double Es = 1.0 / (1.0 / E1 + 1.0 / E2);
+    const double b  = std::min(pair.gear(1).parameters().face_width, pair.gear(2).parameters().face_width);
+    const double curvature = pair.equivalent_curvature(0.0); // 1/R* at C [1/m]
+    for (const double T : torques)
+      {
+        const double w  = T / pair.base_radius(1) / b;
+        const double p0 = std::sqrt(w * Es * curvature / pi);
+        if (!(p0 / Es <= limit))
+          {
+            const double T_max = T * (limit * Es / p0) * (limit * Es / p0);
+            throw InputError("Solve/Torques", to_string_g(T) + " N m",
+                             "<= " + to_string_g(T_max) + " N m for this pair and material",
+                             "The estimated Hertz pressure at the pitch point is p0 = " +
+                               to_string_g(p0 / 1e6) + " MPa, p0/E* = " + to_string_g(100 * p0 / Es) +
+                               " %: beyond the small-strain range of the linear-elastic contact "
+                               "model (limit p0/E* <= 5 %)");
+          }
+      }
+  }
+  } // namespace
 
   void declare_gear_contact_input(dealii::ParameterHandler &prm)
   {
@@ -201,6 +222,7 @@ namespace gearfem::contact
     in.contact = parse_contact_parameters(prm, in.material[0].youngs_modulus, in.material[1].youngs_modulus);
     in.solve   = parse_solve_parameters(prm);
     (void)in.positions(); // checks the position list
+    check_small_strain(*in.pair, pm, in.solve.torques);
     return in;
   }
 

@@ -1,6 +1,7 @@
 #include "dynamics/parameters.h"
 
 #include "base/errors.h"
+#include "params/checked.h"
 #include "base/table.h"
 #include "base/units.h"
 
@@ -20,14 +21,6 @@ namespace gearfem::dynamics
 
   namespace
   {
-    std::vector<double> doubles(const std::string &s)
-    {
-      std::vector<double> v;
-      for (const auto &x : dealii::Utilities::split_string_list(s, ','))
-        if (!x.empty())
-          v.push_back(dealii::Utilities::string_to_double(x));
-      return v;
-    }
 
     /// The STE curve of the STE law from a CSV file: either two columns (position [deg],
     /// STE [um]) or the sweep.csv of `gearfem solve`, whose rows at the case's input torque
@@ -214,22 +207,22 @@ namespace gearfem::dynamics
     c.run_sweep = analysis != "response";
 
     prm.enter_subsection("Pair");
-    c.z1 = prm.get_integer("Pinion teeth");
-    c.z2 = prm.get_integer("Gear teeth");
-    c.module = prm.get_double("Module") * mm;
-    c.alpha = prm.get_double("Pressure angle") * deg;
-    c.addendum = prm.get_double("Addendum coefficient");
-    c.face_width = prm.get_double("Face width") * mm;
-    c.thickness1 = prm.get_double("Pinion thickness coefficient");
-    c.thickness2 = prm.get_double("Gear thickness coefficient");
-    c.delta_a = prm.get_double("Centre distance change") * mm;
-    const double b = prm.get_double("Backlash");
+    c.z1 = params::get_integer(prm, "Pinion teeth");
+    c.z2 = params::get_integer(prm, "Gear teeth");
+    c.module = params::get_double(prm, "Module") * mm;
+    c.alpha = params::get_double(prm, "Pressure angle") * deg;
+    c.addendum = params::get_double(prm, "Addendum coefficient");
+    c.face_width = params::get_double(prm, "Face width") * mm;
+    c.thickness1 = params::get_double(prm, "Pinion thickness coefficient");
+    c.thickness2 = params::get_double(prm, "Gear thickness coefficient");
+    c.delta_a = params::get_double(prm, "Centre distance change") * mm;
+    const double b = params::get_double(prm, "Backlash");
     c.backlash = b < 0 ? -1.0 : b * um;
-    c.density = prm.get_double("Density");
-    c.youngs_modulus = prm.get_double("Young modulus") * GPa;
-    c.poisson_ratio = prm.get_double("Poisson ratio");
-    c.inertia1 = prm.get_double("Pinion inertia");
-    c.inertia2 = prm.get_double("Gear inertia");
+    c.density = params::get_double(prm, "Density");
+    c.youngs_modulus = params::get_double(prm, "Young modulus") * GPa;
+    c.poisson_ratio = params::get_double(prm, "Poisson ratio");
+    c.inertia1 = params::get_double(prm, "Pinion inertia");
+    c.inertia2 = params::get_double(prm, "Gear inertia");
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh force");
@@ -245,11 +238,11 @@ namespace gearfem::dynamics
     c.theta_interpolation = prm.get("Theta interpolation") == "linear" ?
                               ThetaInterpolation::linear :
                               ThetaInterpolation::monotone_cubic;
-    c.single_pair_stiffness = prm.get_double("Single-pair stiffness") * N_per_mm_um;
-    c.double_pair_factor = prm.get_double("Double-pair factor");
-    c.fourier_cos = doubles(prm.get("Fourier cosine coefficients"));
-    c.fourier_sin = doubles(prm.get("Fourier sine coefficients"));
-    c.reverse_mapping = prm.get_bool("Reverse-flank mapping");
+    c.single_pair_stiffness = params::get_double(prm, "Single-pair stiffness") * N_per_mm_um;
+    c.double_pair_factor = params::get_double(prm, "Double-pair factor");
+    c.fourier_cos = params::get_doubles(prm, "Fourier cosine coefficients");
+    c.fourier_sin = params::get_doubles(prm, "Fourier sine coefficients");
+    c.reverse_mapping = params::get_bool(prm, "Reverse-flank mapping");
     const std::string ste = prm.get("STE file");
     std::vector<std::vector<double>> ste_rows;
     std::vector<std::string> ste_headers;
@@ -284,19 +277,19 @@ namespace gearfem::dynamics
                            "calibrate writes mesh_torque.h5 and mesh_stiffness.h5)");
         c.table_file = f.string();
       }
-    c.ricker_widening = prm.get_double("Ricker widening") * deg / mm;
+    c.ricker_widening = params::get_double(prm, "Ricker widening") * deg / mm;
     c.ricker_centred = prm.get("Ricker second pair") == "centred";
     prm.leave_subsection();
 
     prm.enter_subsection("Operating");
-    c.input_torque = prm.get_double("Input torque");
-    c.output_torque = prm.get_double("Output torque");
-    c.speed = prm.get_double("Pinion speed") * rpm;
-    c.ramp_time = prm.get_double("Torque ramp time") * 1e-3;
-    c.speed_source = prm.get_bool("Speed source");
-    c.zeta = prm.get_double("Damping ratio");
-    c.damping_only_in_contact = prm.get_bool("Damping only in contact");
-    c.tooth_mass = prm.get_bool("Tooth mass");
+    c.input_torque = params::get_double(prm, "Input torque");
+    c.output_torque = params::get_double(prm, "Output torque");
+    c.speed = params::get_double(prm, "Pinion speed") * rpm;
+    c.ramp_time = params::get_double(prm, "Torque ramp time") * 1e-3;
+    c.speed_source = params::get_bool(prm, "Speed source");
+    c.zeta = params::get_double(prm, "Damping ratio");
+    c.damping_only_in_contact = params::get_bool(prm, "Damping only in contact");
+    c.tooth_mass = params::get_bool(prm, "Tooth mass");
     c.tooth_mass_energy_weighting = prm.get("Tooth mass weighting") == "quadratic";
     prm.leave_subsection();
 
@@ -304,36 +297,36 @@ namespace gearfem::dynamics
       read_ste(c, ste_path.string(), ste_rows, ste_headers);
 
     prm.enter_subsection("Kahraman-Singh");
-    c.ks_zeta = prm.get_double("Damping ratio");
-    c.ks_force = prm.get_double("Mean force");
-    c.ks_cos = doubles(prm.get("Cosine coefficients"));
-    c.ks_frequency = prm.get_double("Frequency");
+    c.ks_zeta = params::get_double(prm, "Damping ratio");
+    c.ks_force = params::get_double(prm, "Mean force");
+    c.ks_cos = params::get_doubles(prm, "Cosine coefficients");
+    c.ks_frequency = params::get_double(prm, "Frequency");
     prm.leave_subsection();
 
     prm.enter_subsection("Integrator");
     c.integrator.method = method_from_string(prm.get("Method"));
     c.integrator.adaptive = true;
-    c.response.steps_per_period = prm.get_integer("Steps per period");
-    c.integrator.rtol = prm.get_double("Relative tolerance");
-    c.integrator.atol = prm.get_double("Absolute tolerance");
-    c.integrator.locate_events = prm.get_bool("Event location");
-    c.integrator.event_tolerance = prm.get_double("Event tolerance");
+    c.response.steps_per_period = params::get_integer(prm, "Steps per period");
+    c.integrator.rtol = params::get_double(prm, "Relative tolerance");
+    c.integrator.atol = params::get_double(prm, "Absolute tolerance");
+    c.integrator.locate_events = params::get_bool(prm, "Event location");
+    c.integrator.event_tolerance = params::get_double(prm, "Event tolerance");
     if (c.integrator.method != Method::dopri5)
       require_greater("Dynamics/Integrator/Steps per period", c.response.steps_per_period, 0.0);
     c.integrator.step = c.model == ModelKind::kahraman_singh ? 1e-2 : 1e-6; // first trial step
     prm.leave_subsection();
 
     prm.enter_subsection("Analysis");
-    c.response.max_periods = prm.get_integer("Periods per speed");
-    c.response.record_periods = prm.get_integer("Recorded periods");
-    c.response.samples_per_period = prm.get_integer("Samples per period");
-    c.response.steady_tolerance = prm.get_double("Steady-state tolerance");
+    c.response.max_periods = params::get_integer(prm, "Periods per speed");
+    c.response.record_periods = params::get_integer(prm, "Recorded periods");
+    c.response.samples_per_period = params::get_integer(prm, "Samples per period");
+    c.response.steady_tolerance = params::get_double(prm, "Steady-state tolerance");
     const double f = c.model == ModelKind::kahraman_singh ? 1.0 : rpm;
-    c.sweep_min = prm.get_double("Sweep minimum speed") * f;
-    c.sweep_max = prm.get_double("Sweep maximum speed") * f;
-    c.sweep_points = prm.get_integer("Number of speeds");
-    c.threads = prm.get_integer("Threads");
-    for (const double w : doubles(prm.get("Portrait speeds")))
+    c.sweep_min = params::get_double(prm, "Sweep minimum speed") * f;
+    c.sweep_max = params::get_double(prm, "Sweep maximum speed") * f;
+    c.sweep_points = params::get_integer(prm, "Number of speeds");
+    c.threads = params::get_integer(prm, "Threads");
+    for (const double w : params::get_doubles(prm, "Portrait speeds"))
       {
         if (!(w > 0))
           throw InputError("Dynamics/Analysis/Portrait speeds", to_string_g(w), "> 0");

@@ -1,6 +1,8 @@
 // The `Finite elements` section.
 #include "fem/parameters.h"
 
+#include "params/checked.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 namespace gearfem::fem
@@ -27,12 +29,12 @@ namespace gearfem::fem
   {
     FeOptions o;
     prm.enter_subsection("Finite elements");
-    const long p = prm.get_integer("Degree");
+    const long p = params::get_integer(prm, "Degree");
     if (p != 1 && p != 2)
       throw InputError("Finite elements/Degree", std::to_string(p), "{1, 2}");
     o.degree           = unsigned(p);
     o.solver           = solver_kind_from_string(prm.get("Linear solver"));
-    o.umfpack_max_dofs = prm.get_integer("UMFPACK limit");
+    o.umfpack_max_dofs = params::get_integer(prm, "UMFPACK limit");
     const std::string im = prm.get("Interior manifold");
     o.interior = im == "all" ? mesh::InteriorManifold::all :
                  im == "none" ? mesh::InteriorManifold::none :

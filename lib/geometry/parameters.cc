@@ -5,6 +5,8 @@
 #include "geometry/parameters.h"
 
 #include "base/errors.h"
+#include "base/number.h"
+#include "params/checked.h"
 #include "base/units.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -53,18 +55,18 @@ namespace gearfem::geometry
       g.name = name;
       g.rack = rack;
       prm.enter_subsection(name);
-      g.teeth               = prm.get_integer("Number of teeth");
-      g.profile_shift       = prm.get_double("Profile shift coefficient");
-      g.tip_shortening      = prm.get_double("Tip shortening coefficient");
-      g.thickness_allowance = prm.get_double("Thickness allowance") * units::mm;
-      g.face_width          = prm.get_double("Face width") * units::mm;
+      g.teeth               = params::get_integer(prm, "Number of teeth");
+      g.profile_shift       = params::get_double(prm, "Profile shift coefficient");
+      g.tip_shortening      = params::get_double(prm, "Tip shortening coefficient");
+      g.thickness_allowance = params::get_double(prm, "Thickness allowance") * units::mm;
+      g.face_width          = params::get_double(prm, "Face width") * units::mm;
       const std::string k   = prm.get("Tip relief");
       g.relief.kind = k == "linear"    ? TipRelief::Kind::linear :
                       k == "parabolic" ? TipRelief::Kind::parabolic :
                                          TipRelief::Kind::none;
-      g.relief.amount     = prm.get_double("Tip relief amount") * units::um;
-      g.relief.length     = prm.get_double("Tip relief length") * units::mm;
-      g.relief.roll_angle = prm.get_double("Tip relief roll angle") * units::deg;
+      g.relief.amount     = params::get_double(prm, "Tip relief amount") * units::um;
+      g.relief.length     = params::get_double(prm, "Tip relief length") * units::mm;
+      g.relief.roll_angle = params::get_double(prm, "Tip relief roll angle") * units::deg;
       prm.leave_subsection();
       require_greater(name + "/Face width", g.face_width / units::mm, 0.0, "mm");
       if (g.thickness_allowance < 0)
@@ -86,13 +88,12 @@ namespace gearfem::geometry
         {
           if (item.find_first_not_of(" \t") == std::string::npos)
             continue;
-          std::stringstream one(item);
-          double            u, v;
-          char              comma;
-          if (!(one >> u >> comma >> v) || comma != ',')
+          const auto uv = split_trimmed(item, ',');
+          if (uv.size() != 2)
             throw InputError("Rack/Control points", "'" + item + "'",
                              "a list 'u1, v1; u2, v2; ...' of numbers (module units)");
-          pts.emplace_back(u, v);
+          pts.emplace_back(parse_double("Rack/Control points", uv[0]),
+                           parse_double("Rack/Control points", uv[1]));
         }
       return pts;
     }
@@ -154,18 +155,18 @@ namespace gearfem::geometry
   {
     RackParameters rack;
     prm.enter_subsection("Rack");
-    rack.module         = prm.get_double("Module") * units::mm;
-    rack.pressure_angle = prm.get_double("Pressure angle") * units::deg;
-    rack.addendum       = prm.get_double("Addendum coefficient");
-    rack.dedendum       = prm.get_double("Dedendum coefficient");
-    rack.root_radius    = prm.get_double("Root radius coefficient");
-    rack.tip_radius     = prm.get_double("Tip radius coefficient");
+    rack.module         = params::get_double(prm, "Module") * units::mm;
+    rack.pressure_angle = params::get_double(prm, "Pressure angle") * units::deg;
+    rack.addendum       = params::get_double(prm, "Addendum coefficient");
+    rack.dedendum       = params::get_double(prm, "Dedendum coefficient");
+    rack.root_radius    = params::get_double(prm, "Root radius coefficient");
+    rack.tip_radius     = params::get_double(prm, "Tip radius coefficient");
     const std::string k = prm.get("Profile type");
     rack.kind = k == "bspline rack"  ? RackParameters::Kind::bspline_rack :
                 k == "bspline flank" ? RackParameters::Kind::bspline_flank :
                                        RackParameters::Kind::standard;
     rack.control_points = parse_points(prm.get("Control points"));
-    rack.spline_degree  = prm.get_integer("Spline degree");
+    rack.spline_degree  = params::get_integer(prm, "Spline degree");
     prm.leave_subsection();
     require_greater("Rack/Module", rack.module / units::mm, 0.0, "mm");
     require_range("Rack/Pressure angle", rack.pressure_angle / units::deg, 10.0, 35.0, "deg");
@@ -177,7 +178,7 @@ namespace gearfem::geometry
     in.gear1 = parse_gear(prm, "Gear 1", rack);
     in.gear2 = parse_gear(prm, "Gear 2", rack);
     prm.enter_subsection("Pair");
-    in.pair.center_distance = prm.get_double("Centre distance") * units::mm;
+    in.pair.center_distance = params::get_double(prm, "Centre distance") * units::mm;
     prm.leave_subsection();
     if (in.pair.center_distance < 0)
       throw InputError("Pair/Centre distance", to_string_g(in.pair.center_distance / units::mm) + " mm",
@@ -195,9 +196,9 @@ namespace gearfem::geometry
         const std::string g = "Gear " + std::to_string(i);
         Material         &m = i == 1 ? pm.gear1 : pm.gear2;
         prm.enter_subsection(g);
-        m.youngs_modulus = prm.get_double("Young's modulus") * units::GPa;
-        m.poisson_ratio  = prm.get_double("Poisson ratio");
-        m.density        = prm.get_double("Density");
+        m.youngs_modulus = params::get_double(prm, "Young's modulus") * units::GPa;
+        m.poisson_ratio  = params::get_double(prm, "Poisson ratio");
+        m.density        = params::get_double(prm, "Density");
         prm.leave_subsection();
         require_greater("Material/" + g + "/Young's modulus", m.youngs_modulus / units::GPa, 0.0, "GPa");
         if (!(m.poisson_ratio >= 0.0 && m.poisson_ratio < 0.5))

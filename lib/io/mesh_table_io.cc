@@ -2,6 +2,7 @@
 
 #include "base/atomic_file.h"
 #include "base/errors.h"
+#include "base/number.h"
 
 #include <hdf5.h>
 
@@ -123,6 +124,7 @@ namespace gearfem::io
 
       void double_attribute(hid_t obj, const char *name, double value) const
       {
+        require_finite_output(value, file_, std::string("attribute '") + name + "'");
         Hid space(ok_id(H5Screate(H5S_SCALAR), name), H5Sclose);
         Hid attr(ok_id(H5Acreate2(obj, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
                                   H5P_DEFAULT),
@@ -146,6 +148,8 @@ namespace gearfem::io
                    const std::vector<double> &data, const std::string &unit,
                    const std::string &quantity_value = "") const
       {
+        for (const double x : data)
+          require_finite_output(x, file_, std::string("dataset '") + name + "'");
         Hid space(ok_id(H5Screate_simple(int(dims.size()), dims.data(), nullptr), name),
                   H5Sclose);
         Hid set(ok_id(H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,

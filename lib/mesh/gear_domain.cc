@@ -1,5 +1,6 @@
 // Gear body domains (full gear or sector) from a ToothProfile.
 #include "base/errors.h"
+#include "base/number.h"
 #include "mesh/gear_mesh.h"
 
 #include <algorithm>
@@ -48,21 +49,14 @@ namespace gearfem::mesh
                        ">= 0 (0: automatic)");
     if (fine_teeth != "auto")
       {
-        std::stringstream s(fine_teeth);
-        std::string item;
-        while (std::getline(s, item, ','))
+        try
           {
-            std::size_t pos = 0;
-            try
-              {
-                (void)std::stoi(item, &pos);
-              }
-            catch (...)
-              {
-                pos = 0;
-              }
-            if (pos == 0)
+            if (parse_int_list("Mesh/Fine teeth", fine_teeth).empty())
               throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
+          }
+        catch (const InputError &)
+          {
+            throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
           }
       }
   }
@@ -99,10 +93,8 @@ namespace gearfem::mesh
       }
     else
       {
-        std::stringstream in(p.fine_teeth);
-        std::string item;
-        while (std::getline(in, item, ','))
-          s.insert(mod(std::stoi(item), z));
+        for (const int k : parse_int_list("Mesh/Fine teeth", p.fine_teeth))
+          s.insert(mod(k, z));
       }
     return {s.begin(), s.end()};
   }
@@ -130,6 +122,48 @@ namespace gearfem::mesh
                        "no material left between the bore and the root circle");
     return ri;
   }
+
+  namespace
+  {
+  /// Named stops for meshes that would not resolve the tooth or would not fit one machine.
+  void check_resolution(const GearMeshParameters &p, const geometry::ToothProfile &tooth,
+                        double ri, double h_coarse, int n_teeth, int n_fine)
+  {
+    // A fine tooth needs a few elements along its flank (the active flank is shorter than
+    // the whole depth 2.25 m): with h_contact or h_fillet above the module, gmsh still
+    // returns a mesh, but of degenerate cells (angles of 2 and 178 deg at m = 0.1 mm,
+    // h = 0.5 mm) that do not represent the tooth.
+    const double m = tooth.parameters().rack.module;
+    const auto mm  = [](double x) { return to_string_g(x * 1e3) + " mm"; };
+    if (p.h_contact > m)
+      throw InputError("Mesh/h_contact", mm(p.h_contact), "<= module = " + mm(m),
+                       "fewer than ~2 elements along the flank do not resolve the tooth");
+    if (p.h_fillet > m)
+      throw InputError("Mesh/h_fillet", mm(p.h_fillet), "<= module = " + mm(m),
+                       "fewer than ~2 elements along the fillet do not resolve the tooth");
+    if (p.h_tooth > m)
+      throw InputError("Mesh/h_tooth", mm(p.h_tooth), "<= module = " + mm(m) + " (0: automatic)");
+    // Estimated number of quadrilaterals: the body ring (tip to bore) at h_body, plus each
+    // tooth (area ~ 2.25 m x pi m / 2) at its own size. The limit keeps a mesh within the
+    // memory and time of one machine (a full gear of 10000 teeth at the default sizes would
+    // need ~1e8 cells): beyond it, stop with the estimate instead of meshing for hours.
+    const double limit      = 2e6;
+    const double pi_        = 3.14159265358979323846;
+    const double tooth_area = 2.25 * m * pi_ * m / 2;
+    const double h_fine     = std::min(contact_size(p, m), p.h_fillet);
+    const double fraction   = double(n_teeth) / tooth.teeth();
+    const double ring       = fraction * pi_ * (std::pow(tooth.radii().root, 2) - std::pow(ri, 2));
+    const double estimate   = ring / (p.h_body * p.h_body) + n_fine * tooth_area / (h_fine * h_fine) +
+                            (n_teeth - n_fine) * tooth_area / (h_coarse * h_coarse);
+    if (!(estimate <= limit))
+      throw InputError(p.model == GearMeshParameters::Model::full_gear ? "Mesh/Model" : "Mesh/h_body",
+                       p.model == GearMeshParameters::Model::full_gear ?
+                         "full gear (" + std::to_string(tooth.teeth()) + " teeth)" :
+                         mm(p.h_body),
+                       "a mesh of <= 2e6 cells (estimated: " + to_string_g(estimate) + ")",
+                       "use Model = sector, or larger h_body/h_tooth");
+  }
+  } // namespace
 
   boundary::Code segment_code(geometry::SegmentType type, geometry::Side side)
   {
@@ -160,6 +194,7 @@ namespace gearfem::mesh
     const std::vector<int> fine = fine_teeth(p, z);
     const std::set<int> fine_set(fine.begin(), fine.end());
     const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
+    check_resolution(p, tooth, ri, h_coarse, int(model_teeth(p, z).size()), int(fine.size()));
 
     Domain d;
     d.h_body = p.h_body;

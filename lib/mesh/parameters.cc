@@ -3,6 +3,7 @@
 #include "mesh/parameters.h"
 
 #include "base/units.h"
+#include "params/checked.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -68,18 +69,18 @@ namespace gearfem::mesh
     prm.enter_subsection("Mesh");
     p.model = prm.get("Model") == "sector" ? GearMeshParameters::Model::sector :
                                              GearMeshParameters::Model::full_gear;
-    p.sector_teeth   = prm.get_integer("Sector teeth");
-    p.h_contact      = prm.get_double("h_contact") * units::mm;
-    p.h_fillet       = prm.get_double("h_fillet") * units::mm;
-    p.h_coast        = prm.get_double("h_coast") * units::mm;
-    p.h_body         = prm.get_double("h_body") * units::mm;
-    p.h_tooth        = prm.get_double("h_tooth") * units::mm;
-    p.growth         = prm.get_double("Growth ratio");
-    p.refinements    = prm.get_integer("Global refinements");
-    p.spline_samples = prm.get_integer("Spline samples");
+    p.sector_teeth   = params::get_integer(prm, "Sector teeth");
+    p.h_contact      = params::get_double(prm, "h_contact") * units::mm;
+    p.h_fillet       = params::get_double(prm, "h_fillet") * units::mm;
+    p.h_coast        = params::get_double(prm, "h_coast") * units::mm;
+    p.h_body         = params::get_double(prm, "h_body") * units::mm;
+    p.h_tooth        = params::get_double(prm, "h_tooth") * units::mm;
+    p.growth         = params::get_double(prm, "Growth ratio");
+    p.refinements    = params::get_integer(prm, "Global refinements");
+    p.spline_samples = params::get_integer(prm, "Spline samples");
     prm.enter_subsection(gear == 2 ? "Gear 2" : "Gear 1");
-    p.bore_radius   = prm.get_double("Bore radius") * units::mm;
-    p.rim_thickness = prm.get_double("Rim thickness") * units::mm;
+    p.bore_radius   = params::get_double(prm, "Bore radius") * units::mm;
+    p.rim_thickness = params::get_double(prm, "Rim thickness") * units::mm;
     p.fine_teeth    = prm.get("Fine teeth");
     prm.leave_subsection();
     prm.leave_subsection();

@@ -6,6 +6,8 @@
 #include "io/mesh_table_io.h"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 #include <hdf5.h>
 
 #include <cmath>
@@ -530,4 +532,18 @@ TEST_F(MeshTableIo, SteTable)
   expect_same(t, r);
   EXPECT_EQ(info.format_version, 2);
   EXPECT_THROW(TableLaw(r, ThetaInterpolation::linear), InputError);
+}
+
+// Issue 13: no NaN or inf reaches an HDF5 table; nothing is left behind.
+TEST_F(MeshTableIo, RefusesNonFiniteValues)
+{
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+      MeshTable t = torque_table();
+      t.values[t.values.size() / 2] = bad;
+      const fs::path file = dir_ / "nan.h5";
+      EXPECT_ANY_THROW(write_mesh_table(file, t, {"test", ""}));
+      EXPECT_FALSE(fs::exists(file));
+      EXPECT_TRUE(fs::is_empty(dir_)) << "temporary file left behind";
+    }
 }

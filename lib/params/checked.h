@@ -1,0 +1,46 @@
+#pragma once
+// Checked reads of ParameterHandler values: every numeric entry of gearfem is read through
+// these functions, which convert with the one strict conversion of base/number.h and throw
+// gearfem::InputError (exit status 2) naming the entry, the value and the allowed range.
+//
+// Why deal.II 9.4 alone is not enough (found with tests/fuzz, issue 13):
+//  1. ParameterHandler::parse_input()/set() do not check a value against its pattern when
+//     the value contains a '{': such values are reserved for MultipleParameterLoop variants
+//     ("{ 1 | 2 }", "{{ ... }}"), which are expanded later. So "${X}" (or "{", "{1|2}") is
+//     stored unchecked in a Double, Integer, Bool, Selection or List entry; get_double() then
+//     fails with "Can't convert the parameter value <${X}> ..." (ExcMessage, exit 1), and
+//     get() silently returns the text (a Selection read with get() falls to a default).
+//     Patterns::Double().match("${X}") itself is false.
+//  2. Patterns::Double::match() reads with an istringstream, which accepts a subnormal value
+//     such as 1e-320, but get_double() converts with Utilities::string_to_double(), i.e.
+//     strtod(), which sets ERANGE for it, and that is refused. A List of Double has the same
+//     gap for its items.
+// check_entries() closes (1) for every pattern type by matching every entry of a parsed
+// handler again, item by item for List/Map/Tuple, with the strict conversion for Double and
+// Integer items; get_double()/get_integer() close (1) and (2) at each read.
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace gearfem::params
+{
+  /// prm.get(entry) converted by base/number.h parse_double (finite, 0 or normal).
+  double get_double(const dealii::ParameterHandler &prm, const std::string &entry);
+  /// prm.get(entry) converted by base/number.h parse_int (decimal digits, fits in an int).
+  int get_integer(const dealii::ParameterHandler &prm, const std::string &entry);
+  /// prm.get(entry): true/false/yes/no, as Patterns::Bool.
+  bool get_bool(const dealii::ParameterHandler &prm, const std::string &entry);
+  /// A comma-separated list of doubles (empty items skipped), each checked as get_double.
+  std::vector<double> get_doubles(const dealii::ParameterHandler &prm, const std::string &entry);
+
+  /// Check every entry of `prm` (all subsections) against its declared pattern, strictly:
+  /// Double and Integer values (also as List, Map and Tuple items) must convert with
+  /// base/number.h, every other pattern must match (this catches the values with '{' that
+  /// parse_input() lets through). Throws InputError naming "Section/Entry", the value and
+  /// the pattern. Call after parse_input().
+  void check_entries(const dealii::ParameterHandler &prm);
+} // namespace gearfem::params
