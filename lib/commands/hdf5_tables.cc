@@ -20,6 +20,13 @@ namespace gearfem::commands
                          const std::filesystem::path &file,
                          const std::map<std::string, std::string> &attributes)
   {
+    // Every value is checked before the file is opened: an exception thrown while a
+    // dealii::HDF5 object is open makes its destructor call MPI_Abort (the process dies
+    // instead of reporting the bad value with exit status 2).
+    for (const auto &[name, table] : tables)
+      for (std::size_t i = 0; i < table.n_rows(); ++i)
+        for (std::size_t c = 0; c < table.n_columns(); ++c)
+          require_finite_output(table.row(i)[c], file.string(), "dataset '" + name + "/" + table.headers()[c] + "'");
     TemporaryPath tmp(file);
     {
       dealii::HDF5::File f(tmp.path().string(), dealii::HDF5::File::FileAccessMode::create);
@@ -34,11 +41,7 @@ namespace gearfem::commands
             {
               std::vector<double> col(table.n_rows());
               for (std::size_t i = 0; i < table.n_rows(); ++i)
-                {
-                  col[i] = table.row(i)[c];
-                  require_finite_output(col[i], file.string(),
-                                        "dataset '" + name + "/" + table.headers()[c] + "'");
-                }
+                col[i] = table.row(i)[c];
               g.write_dataset(dataset_name(table.headers()[c]), col);
             }
         }
