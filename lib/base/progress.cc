@@ -4,9 +4,10 @@
 
 namespace gearfem
 {
-  Progress::Progress(std::ostream *out, std::size_t total, std::string label)
+  Progress::Progress(std::ostream *out, std::size_t total, std::string label, std::size_t done)
     : out_(out)
     , total_(total)
+    , done_(done)
     , label_(std::move(label))
     , start_(std::chrono::steady_clock::now())
   {}
@@ -21,7 +22,7 @@ namespace gearfem
     if (out_ == nullptr)
       return;
     const double t   = elapsed_seconds();
-    const double eta = i > 0 ? t / double(i) * double(total_ - i) : 0.0;
+    const double eta = i > done_ && i <= total_ ? t / double(i - done_) * double(total_ - i) : 0.0;
     char buf[128];
     std::snprintf(buf, sizeof(buf), "%s %zu/%zu  elapsed %.1f s  ETA %.1f s", label_.c_str(), i,
                   total_, t, eta);

@@ -11,14 +11,16 @@ namespace gearfem
   public:
     /// @param out    where to print (rank-0 stream); nullptr silences it
     /// @param total  number of steps N
-    Progress(std::ostream *out, std::size_t total, std::string label);
+    /// @param done   steps already done before this run (a resumed run): the ETA is
+    ///               estimated from the steps of this run only
+    Progress(std::ostream *out, std::size_t total, std::string label, std::size_t done = 0);
     /// Report that step i (1-based) has finished; `detail` is appended to the line.
     void step(std::size_t i, const std::string &detail = "");
     double elapsed_seconds() const;
 
   private:
     std::ostream *out_;
-    std::size_t total_;
+    std::size_t total_, done_;
     std::string label_;
     std::chrono::steady_clock::time_point start_;
   };

@@ -26,6 +26,14 @@ namespace gearfem
     rows_.push_back(row);
   }
 
+  bool Table::has_column(const std::string &name) const
+  {
+    for (const auto &n : names_)
+      if (n == name)
+        return true;
+    return false;
+  }
+
   std::vector<double> Table::column(const std::string &name) const
   {
     for (std::size_t c = 0; c < names_.size(); ++c)

@@ -16,7 +16,12 @@ namespace gearfem
     std::size_t n_rows() const { return rows_.size(); }
     std::size_t n_columns() const { return names_.size(); }
     const std::vector<double> &row(std::size_t i) const { return rows_[i]; }
+    /// The values of the column called `name` (without unit); throws std::logic_error
+    /// if there is none.
     std::vector<double> column(const std::string &name) const;
+    bool has_column(const std::string &name) const;
+    const std::string &name(std::size_t c) const { return names_[c]; }
+    const std::string &unit(std::size_t c) const { return units_[c]; }
     /// Header labels "name [unit]".
     std::vector<std::string> headers() const;
     /// Write as CSV with `significant` digits, atomically.

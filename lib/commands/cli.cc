@@ -25,7 +25,7 @@ namespace gearfem::commands
     {
       out << "gearfem " << version_string << " (" << git_hash << ")\n"
           << "Finite-element spur-gear contact analysis.\n\n"
-          << "Usage: gearfem <command> <file.prm> [--output-dir DIR] [--validate]\n"
+          << "Usage: gearfem <command> <file.prm> [--output-dir DIR] [--validate] [--resume]\n"
           << "       gearfem <command> --print-parameters [json|prm]\n"
           << "       gearfem <command> --help\n"
           << "       gearfem --version\n\nCommands:\n";
@@ -91,11 +91,14 @@ namespace gearfem::commands
                         << cmd.description << "\n\nOptions:\n"
                         << "  --output-dir DIR           output folder (default results/<case>)\n"
                         << "  --validate                 parse and check the input only\n"
+                        << "  --resume                   continue an interrupted run (solve)\n"
                         << "  --print-parameters [json|prm]  all parameters with defaults\n";
               return 0;
             }
           else if (a == "--validate")
             ctx.validate_only = true;
+          else if (a == "--resume")
+            ctx.resume = true;
           else if (a == "--print-parameters")
             {
               print_parameters = true;
@@ -113,11 +116,13 @@ namespace gearfem::commands
             }
           else if (a.size() > 1 && a[0] == '-')
             throw InputError("command-line option", a,
-                             "--output-dir, --validate, --print-parameters, --help");
+                             "--output-dir, --validate, --resume, --print-parameters, --help");
           else
             ctx.arguments.push_back(a);
         }
 
+      if (ctx.resume && cmd.name != "solve")
+        throw InputError("--resume", cmd.name, "the solve command", "only `gearfem solve` keeps a journal to resume");
       dealii::ParameterHandler prm;
       cmd.declare(prm);
       declare_output(prm);

@@ -26,6 +26,8 @@ namespace gearfem::commands
     /// When true the command parses and checks its input, prints a summary and returns
     /// without writing anything.
     bool validate_only = false;
+    /// `--resume`: continue an interrupted run from the journal in output_dir (solve).
+    bool resume = false;
   };
 
   struct Command

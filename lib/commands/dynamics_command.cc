@@ -4,7 +4,7 @@
 #include "base/errors.h"
 #include "base/table.h"
 #include "commands/command.h"
-#include "commands/hdf5_tables.h"
+#include "io/solve_results.h"
 #include "dynamics/analysis.h"
 #include "dynamics/case.h"
 #include "dynamics/parameters.h"
@@ -398,7 +398,10 @@ namespace gearfem::commands
         out << "warning: the mesh-force table was evaluated outside its range " << clamps
             << " times (stiffness clamped); see summary.txt\n";
       write_file_atomically(ctx.output_dir / "summary.txt", summary.str());
-      write_hdf5_tables(h5_tables, ctx.output_dir / "response.h5", {{"program", "gearfem dynamics"}});
+      std::vector<std::pair<std::string, const Table *>> h5;
+      for (const auto &[name, table] : h5_tables)
+        h5.emplace_back(name, &table);
+      io::write_table_file(h5, ctx.output_dir / "response.h5", {{"program", "gearfem dynamics"}});
       run_plot_script("plot_dynamics.py", {ctx.output_dir.string()}, ctx.out);
     }
   } // namespace

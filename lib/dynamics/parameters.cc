@@ -4,6 +4,7 @@
 #include "params/checked.h"
 #include "base/table.h"
 #include "base/units.h"
+#include "io/solve_results.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -34,8 +35,8 @@ namespace gearfem::dynamics
         const auto it = std::find(headers.begin(), headers.end(), h);
         return it == headers.end() ? -1 : int(it - headers.begin());
       };
-      const int ct = column("torque [N m]"), ca = column("roll angle [deg]"), cs = column("STE [um]"),
-                cf = column("F_n [N]");
+      const int ct = column(io::sweep_column::torque), ca = column(io::sweep_column::roll_angle),
+                cs = column(io::sweep_column::ste), cf = column(io::sweep_column::normal_force);
       const bool fe = ct >= 0 && ca >= 0 && cs >= 0 && cf >= 0;
       std::string torques;
       double F = 0, d = 0;

@@ -1,7 +1,7 @@
 #pragma once
 // HDF5 mesh-table files: the versioned contract between the FE calibration (which writes
 // T(theta, delta), k(theta, F) and STE(theta, T) tables) and the dynamics module (which reads
-// them into a dynamics::MeshTable for TableLaw). Layout (see docs/mesh-tables.md):
+// them into a MeshTable for TableLaw). Layout (see docs/mesh-tables.md):
 //
 //   /                         attributes: format = "gearfem-mesh-table" (string)
 //                                         format_version = 1 or 2 (integer)
@@ -21,7 +21,7 @@
 // All numbers are stored as IEEE float64, so a round trip is bit-exact. Strings are
 // variable-length UTF-8 (h5py reads them as str); fixed-length strings are also accepted.
 // No deal.II here: this is a light module (HDF5 C API only).
-#include "dynamics/mesh_force.h"
+#include "io/mesh_table.h"
 
 #include <filesystem>
 #include <string>
@@ -60,7 +60,7 @@ namespace gearfem::io
   /// written as [second.front(), second.back()].
   /// Throws InputError if the table is invalid or the file cannot be created (e.g. the
   /// folder does not exist), std::runtime_error for other HDF5 write failures.
-  void write_mesh_table(const std::filesystem::path &file, const dynamics::MeshTable &table,
+  void write_mesh_table(const std::filesystem::path &file, const MeshTable &table,
                         const TableProvenance &provenance);
 
   /// Read a mesh table and check it (MeshTable::check, with `expected_hash` if not empty).
@@ -68,7 +68,7 @@ namespace gearfem::io
   /// file that is not HDF5 or is corrupt, a wrong `format` or `format_version`, missing
   /// axes or values, wrong units, sizes that do not match, and a geometry-hash mismatch.
   /// @param info if not null, receives the provenance, version and validity range.
-  dynamics::MeshTable read_mesh_table(const std::filesystem::path &file,
+  MeshTable read_mesh_table(const std::filesystem::path &file,
                                       const std::string &expected_hash = "",
                                       MeshTableFileInfo *info = nullptr);
 } // namespace gearfem::io

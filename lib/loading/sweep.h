@@ -1,0 +1,71 @@
+#pragma once
+// The quasi-static sweep over the mesh cycle: torques x positions of a GearContactModel,
+// with torque targeting per position (GearContactModel::solve), warm starts along each
+// torque's positions, and failure handling. Each finished position goes to the observers
+// (output tables, VTU files, progress, the checkpoint journal); the sweep itself writes
+// nothing. A sweep can start from a checkpoint (SweepStart): the positions before it are
+// skipped and the warm start is the one the uninterrupted run had, so the resumed results
+// equal those of an uninterrupted run.
+#include "contact/gear_contact.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gearfem::loading
+{
+  /// What to solve: every position for each torque, torques in the given order.
+  struct SweepPlan
+  {
+    std::vector<std::pair<std::string, double>> positions; ///< (name or "", pinion roll phi1 [rad])
+    std::vector<double> torques;                           ///< pinion torques T1 [N m]
+    std::size_t size() const { return positions.size() * torques.size(); }
+  };
+
+  /// One point of the plan; `index` = torque_index * n_positions + position_index.
+  struct SweepPoint
+  {
+    std::size_t index = 0, torque_index = 0, position_index = 0, total = 0;
+    double torque = 0, phi1 = 0;
+    std::string name;
+  };
+
+  class SweepObserver
+  {
+  public:
+    virtual ~SweepObserver() = default;
+    /// True if the displacement fields of this point are wanted (VTU output).
+    virtual bool wants_fields(const SweepPoint &) const { return false; }
+    /// A converged position. `r` may be modified (e.g. its fields released) by an observer
+    /// that has used them; observers run in the order given.
+    virtual void finished(const SweepPoint &p, contact::PositionResult &r) = 0;
+  };
+
+  /// Where a sweep starts: the first point to solve and the warm start it would have had.
+  struct SweepStart
+  {
+    std::size_t next = 0;                ///< points 0 .. next-1 are done
+    bool have_warm   = false;            ///< false: cold start (first position of a torque)
+    contact::ContactSolution warm;       ///< the converged state of point next-1
+  };
+
+  struct SweepOutcome
+  {
+    std::size_t finished = 0; ///< points finished in this call
+    std::string failure;      ///< empty, or the SolverError message of the point that failed
+    SweepPoint failed_point;  ///< valid when failure is not empty
+  };
+
+  /// The part of a converged state that a warm start reads (q, load, the slave forces and
+  /// the nodal forces of both bodies), as numbers for a checkpoint, and back. Exact.
+  std::vector<double> pack_warm_start(const contact::ContactSolution &s);
+  /// Throws InputError if `v` is not a packed warm start.
+  contact::ContactSolution unpack_warm_start(const std::vector<double> &v);
+
+  /// Run the plan from `start`. A SolverError at a point stops the sweep and is returned in
+  /// the outcome (the finished points have reached the observers); other exceptions
+  /// propagate.
+  SweepOutcome run_sweep(contact::GearContactModel &model, const SweepPlan &plan,
+                         const std::vector<SweepObserver *> &observers,
+                         const SweepStart &start = SweepStart());
+} // namespace gearfem::loading

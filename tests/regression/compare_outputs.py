@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""Compare gearfem output files of two folders column by column.
+
+    compare_outputs.py DIR_A DIR_B FILE...   (CSV files, or HDF5 files read with h5py)
+
+Each column's largest difference relative to the column's largest magnitude must be at
+most TOL (environment, default 1e-8); the wall time column "time [s]" is skipped. Prints
+the worst columns; exit status 1 if any exceeds TOL.
+"""
+import csv, sys, os
+a, b = sys.argv[1], sys.argv[2]
+files = sys.argv[3:]
+worst = {}
+for name in files:
+    pa, pb = os.path.join(a, name), os.path.join(b, name)
+    if name.endswith('.h5'):
+        import h5py
+        fa, fb = h5py.File(pa, 'r'), h5py.File(pb, 'r')
+        def walk(g, prefix=''):
+            for k in g:
+                if isinstance(g[k], h5py.Dataset): yield prefix + k
+                else: yield from walk(g[k], prefix + k + '/')
+        for k in walk(fa):
+            import numpy as np
+            x, y = np.asarray(fa[k]).ravel(), np.asarray(fb[k]).ravel()
+            assert x.shape == y.shape, (name, k)
+            d = float(np.max(np.abs(x - y) / np.maximum(1e-30, np.maximum(np.abs(x), np.abs(y)))) if x.size else 0.0)
+            d = float(np.max(np.abs(x - y) / np.maximum(np.abs(x).max(), 1e-30))) if x.size else 0.0
+            worst[name + ':' + k] = d
+        continue
+    ra, rb = list(csv.reader(open(pa))), list(csv.reader(open(pb)))
+    assert ra[0] == rb[0], (name, ra[0], rb[0])
+    assert len(ra) == len(rb), (name, len(ra), len(rb))
+    for i, h in enumerate(ra[0]):
+        if h == 'time [s]': continue
+        col_a = [float(r[i]) for r in ra[1:]]; col_b = [float(r[i]) for r in rb[1:]]
+        scale = max([abs(x) for x in col_a] + [1e-30])
+        d = max([abs(x - y) / scale for x, y in zip(col_a, col_b)] + [0.0])
+        worst[name + ':' + h] = d
+tol = float(os.environ.get('TOL', '1e-8'))
+bad = {k: v for k, v in worst.items() if v > tol}
+for k, v in sorted(worst.items(), key=lambda kv: -kv[1])[:8]:
+    print(f'{v:.3e}  {k}')
+print('columns compared:', len(worst), 'over tolerance', tol, ':', len(bad))
+sys.exit(1 if bad else 0)
