@@ -295,7 +295,7 @@ namespace gearfem::contact
     r.phi1 = phi1, r.torque = torque;
     r.solution      = std::move(s);
     const auto &sol = r.solution;
-    const double rb1 = pair_->base_radius(1), rb2 = pair_->base_radius(2);
+    const double rb1 = pair_->base_radius(1);
     r.rotation     = sol.q;
     r.ste          = sol.q * rb1;
     r.normal_force = sol.load / rb1;
