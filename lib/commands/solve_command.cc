@@ -56,7 +56,7 @@ namespace gearfem::commands
       if (!r.failure.empty())
         throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
                           " completed positions are saved in " + ctx.output_dir.string() +
-                          " (rerun with --resume to continue after fixing the cause)");
+                          " (their journal stays: with the input unchanged, --resume retries from the failed position)");
       out << "\n" << post::summary_table(r, pair, in.solve.torques);
       int n_unresolved = 0;
       for (const auto &[T, n] : r.unresolved)
