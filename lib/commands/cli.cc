@@ -72,6 +72,28 @@ namespace gearfem::commands
       return r;
     }
 
+    /// input.prm (the parameter file as read) and run.json (the run record) in the output folder.
+    void write_run_record(const Command &cmd, const RunContext &ctx, double wall)
+    {
+      if (!ctx.input_file.empty())
+        {
+          std::ifstream in(ctx.input_file);
+          std::stringstream content;
+          content << in.rdbuf();
+          write_file_atomically(ctx.output_dir / "input.prm", content.str());
+        }
+      std::time_t now = std::time(nullptr);
+      char date[64];
+      std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+      std::ostringstream j;
+      j << "{\n  \"program\": \"gearfem\",\n  \"version\": \"" << version_string
+        << "\",\n  \"git_hash\": \"" << git_hash << "\",\n  \"command\": \"" << cmd.name
+        << "\",\n  \"command_line\": \"" << json_escape(ctx.command_line)
+        << "\",\n  \"input\": \"" << json_escape(ctx.input_file.string())
+        << "\",\n  \"finished_utc\": \"" << date << "\",\n  \"wall_time_s\": " << wall << "\n}\n";
+      write_file_atomically(ctx.output_dir / "run.json", j.str());
+    }
+
     int run_command(const Command &cmd, int argc, char **argv)
     {
       RunContext ctx;
@@ -212,23 +234,7 @@ namespace gearfem::commands
         }
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-      if (!ctx.input_file.empty())
-        {
-          std::ifstream in(ctx.input_file);
-          std::stringstream content;
-          content << in.rdbuf();
-          write_file_atomically(ctx.output_dir / "input.prm", content.str());
-        }
-      std::time_t now = std::time(nullptr);
-      char date[64];
-      std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-      std::ostringstream j;
-      j << "{\n  \"program\": \"gearfem\",\n  \"version\": \"" << version_string
-        << "\",\n  \"git_hash\": \"" << git_hash << "\",\n  \"command\": \"" << cmd.name
-        << "\",\n  \"command_line\": \"" << json_escape(ctx.command_line)
-        << "\",\n  \"input\": \"" << json_escape(ctx.input_file.string())
-        << "\",\n  \"finished_utc\": \"" << date << "\",\n  \"wall_time_s\": " << wall << "\n}\n";
-      write_file_atomically(ctx.output_dir / "run.json", j.str());
+      write_run_record(cmd, ctx, wall);
       std::cout << "results in " << ctx.output_dir.string() << " (" << std::fixed
                 << std::setprecision(2) << wall << " s)" << std::endl;
       return 0;
