@@ -1,6 +1,7 @@
 #include "analytical/agma.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 
 #include <cmath>
 #include <limits>
@@ -13,16 +14,14 @@ namespace gearfem::analytical::agma
     double inv(double a) { return std::tan(a) - a; }
     double inv_inverse(double v)
     {
-      double a = std::cbrt(3.0 * v); // inv a ~ a^3/3
-      for (int i = 0; i < 60; ++i)
-        {
+      // inv a >= a^3/3: the root lies in [0, cbrt(3 v)]; Newton from the upper end.
+      const double hi = std::min(std::cbrt(3.0 * v), 0.5 * pi);
+      return base::find_root_newton(
+        [v](double a) {
           const double t = std::tan(a);
-          const double step = (inv(a) - v) / (t * t);
-          a -= step;
-          if (std::abs(step) < 1e-16)
-            break;
-        }
-      return a;
+          return std::make_pair(inv(a) - v, t * t);
+        },
+        0.0, hi, hi, 4e-16, 100, "AGMA 908 inverse involute function inv a = " + to_string_g(v));
     }
   } // namespace
 
@@ -174,17 +173,8 @@ namespace gearfem::analytical::agma
     if (!found)
       throw SolverError("AGMA Lewis parabola: no tangency point on the fillet (load point y_L = " +
                         to_string_g(yL) + ")");
-    double flo = f(lo);
-    for (int it = 0; it < 200 && std::abs(hi - lo) > 1e-15 * (1 + std::abs(lo)); ++it)
-      {
-        const double mid = 0.5 * (lo + hi), fm = f(mid);
-        if (flo * fm <= 0.0)
-          hi = mid;
-        else
-          lo = mid, flo = fm;
-      }
     LewisSection s;
-    s.t = 0.5 * (lo + hi);
+    s.t = base::find_root_bisection(f, lo, hi, "AGMA Lewis parabola tangency on the fillet");
     s.s_F = 2.0 * std::abs(c.x(s.t, 0));
     s.y_F = c.y(s.t, 0);
     s.h_F = yL - s.y_F;

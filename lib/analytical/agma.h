@@ -71,8 +71,8 @@ namespace gearfem::analytical::agma
   /// The Lewis parabola inscribed in a generated fillet (any curve, e.g. the exact
   /// ProfileSegment fillet of lib/geometry): the point F where the parabola with vertex
   /// at the load point (0, y_L) on the tooth axis is tangent to the fillet,
-  /// 2 h_F tan(beta) = |x_F| with h_F = y_L - y_F, by bracketing and Newton/bisection on
-  /// the curve parameter. Lengths in the curve's units. rho_F is the minimum radius of
+  /// 2 h_F tan(beta) = |x_F| with h_F = y_L - y_F, bracketed on a sample and found by
+  /// bisection on the curve parameter (base::find_root_bisection). Lengths in the curve's units. rho_F is the minimum radius of
   /// curvature of the fillet (AGMA takes it at the root, 4.3.2-40).
   struct LewisSection
   {

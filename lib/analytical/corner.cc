@@ -163,14 +163,20 @@ namespace gearfem::analytical
         // gear turned back by x/rb2, so x solves x = G(g + x) (a contraction: G' ~ d/R << 1).
         double x = e.gap(g);
         if (frame == GapFrame::pinion)
-          for (int it = 0; it < 100 && std::isfinite(x); ++it)
-            {
-              const double next = e.gap(g + x);
-              const bool done = std::abs(next - x) <= 1e-15 * geo.length;
-              x = next;
-              if (done)
-                break;
-            }
+          {
+            // A fixed point, not a bracketed root: G is not finite where the corner leaves
+            // the mate flank, so the iteration stops there (no contact) instead.
+            bool done = false;
+            for (int it = 0; it < 100 && std::isfinite(x) && !done; ++it)
+              {
+                const double next = e.gap(g + x);
+                done = std::abs(next - x) <= 1e-15 * geo.length;
+                x = next;
+              }
+            if (std::isfinite(x) && !done)
+              throw SolverError("corner contact: the pinion-frame gap x = G(g + x) did not converge in 100 "
+                                "iterations at g = " + to_string_g(g) + " m (last x = " + to_string_g(x) + " m)");
+          }
         if (!std::isfinite(x))
           return out;
         out.gap = std::max(0.0, x);

@@ -1,6 +1,7 @@
 #include "analytical/iso6336.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -126,21 +127,9 @@ namespace gearfem::analytical::iso6336
     if (!found)
       throw SolverError("ISO 6336-3 critical section: no fillet point has its tangent at " +
                         to_string_g(angle_deg) + " deg to the tooth axis");
-    double glo = g(lo);
-    for (int it = 0; it < 200 && std::abs(hi - lo) > 1e-15 * (1 + std::abs(lo)); ++it)
-      {
-        const double mid = 0.5 * (lo + hi);
-        const double gm = g(mid);
-        if (glo * gm <= 0.0)
-          hi = mid;
-        else
-          {
-            lo = mid;
-            glo = gm;
-          }
-      }
     CriticalSection cs;
-    cs.t = 0.5 * (lo + hi);
+    cs.t = base::find_root_bisection(g, lo, hi, "ISO 6336-3 critical section (" + to_string_g(angle_deg) +
+                                                  " deg tangent)");
     cs.s_Fn = 2.0 * std::abs(c.x(cs.t, 0));
     cs.y = c.y(cs.t, 0);
     const double x1 = c.x(cs.t, 1), y1 = c.y(cs.t, 1), x2 = c.x(cs.t, 2), y2 = c.y(cs.t, 2);
@@ -180,17 +169,13 @@ namespace gearfem::analytical::iso6336
           (1.0 - std::sin(an)) * rho_fP * m / std::cos(an);
     r.G = rho_fP - h_fP + x;
     r.H = 2.0 / zn * (pi / 2.0 - r.E / m) - pi / 3.0;
-    double th = pi / 6.0;
-    for (int i = 0; i < 200; ++i)
-      {
-        // Newton on f(th) = 2G/zn tan th - H - th.
-        const double f = 2.0 * r.G / zn * std::tan(th) - r.H - th;
-        const double df = 2.0 * r.G / zn / (std::cos(th) * std::cos(th)) - 1.0;
-        const double step = f / df;
-        th -= step;
-        if (std::abs(step) < 1e-15)
-          break;
-      }
+    // Newton on f(th) = 2G/zn tan th - H - th from pi/6, in (-pi/2, pi/2) where tan is finite.
+    const double th = base::find_root_newton(
+      [&](double t) {
+        return std::make_pair(2.0 * r.G / zn * std::tan(t) - r.H - t,
+                              2.0 * r.G / zn / (std::cos(t) * std::cos(t)) - 1.0);
+      },
+      -0.5 * pi + 1e-6, 0.5 * pi - 1e-6, pi / 6.0, 1e-15, 200, "ISO 6336-3 theta equation");
     r.theta = th;
     r.s_Fn = m * (zn * std::sin(pi / 3.0 - th) + std::sqrt(3.0) * (r.G / std::cos(th) - rho_fP));
     r.rho_F = m * (rho_fP + 2.0 * r.G * r.G / (std::cos(th) * (zn * std::cos(th) * std::cos(th) - 2.0 * r.G)));

@@ -80,8 +80,8 @@ namespace gearfem::analytical::iso6336
   };
 
   /// The 30-degree tangent construction (ISO 6336-3 clause 6.2): the fillet point whose
-  /// tangent makes 30 deg with the tooth axis, found by safeguarded Newton on the curve
-  /// parameter (bisection fallback).
+  /// tangent makes 30 deg with the tooth axis, bracketed on a sample and found by
+  /// bisection on the curve parameter (base::find_root_bisection).
   struct CriticalSection
   {
     double t = 0;      ///< curve parameter

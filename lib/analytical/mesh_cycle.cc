@@ -1,8 +1,8 @@
 #include "analytical/mesh_cycle.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 
-#include <algorithm>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -71,26 +71,21 @@ namespace gearfem::analytical
     }
 
     /// Load sharing with corner contact: the compression x at which the pairs on the path
-    /// and in corner contact carry `load` (secant iterations on the monotone
-    /// load_at_compression, started from the path-only solution).
+    /// and in corner contact carry `load`: TOMS 748 on the monotone load_at_compression
+    /// between no compression (no load) and the path-only solution (the corner pairs only
+    /// add load, so the path-only compression carries at least `load`).
     MeshState solve_with_corners(const MeshModel &m, double phi, double load, const MeshState &path)
     {
-      double x0 = path.deflection, f0 = corner_pairs(m, phi, x0, nullptr, nullptr) - load;
-      double x1 = f0 > 0 ? 0.9 * x0 : x0, f1 = f0;
-      if (f0 > 0)
-        f1 = corner_pairs(m, phi, x1, nullptr, nullptr) - load;
+      auto f = [&](double x) { return corner_pairs(m, phi, x, nullptr, nullptr) - load; };
+      double x1 = path.deflection;
       int it = 0;
-      for (; it < 100 && std::abs(f1) > 1e-12 * load; ++it)
+      if (std::abs(f(x1)) > 1e-12 * load)
         {
-          double x2 = f1 != f0 ? x1 - f1 * (x1 - x0) / (f1 - f0) : 0.5 * x1;
-          if (!(x2 > 0) || !std::isfinite(x2))
-            x2 = 0.5 * x1;
-          x0 = x1, f0 = f1, x1 = x2;
-          f1 = corner_pairs(m, phi, x1, nullptr, nullptr) - load;
+          // The upper end has a margin for the round-off of the path-only iteration (1e-12).
+          x1 = base::find_root(f, 0.0, x1 * (1 + 1e-9), 1e-14, 100,
+                               "mesh position with corner contact at roll angle " + to_string_g(phi) + " rad",
+                               &it);
         }
-      if (std::abs(f1) > 1e-9 * load)
-        throw SolverError("mesh position with corner contact: no convergence at roll angle " +
-                          to_string_g(phi) + " rad");
       MeshState s;
       s.roll_angle = phi, s.load = load, s.deflection = x1, s.iterations = path.iterations + it;
       corner_pairs(m, phi, x1, &s.g, &s.pair_load);

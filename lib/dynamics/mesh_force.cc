@@ -1,6 +1,7 @@
 #include "dynamics/mesh_force.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -270,18 +271,18 @@ namespace gearfem::dynamics
 
   double TableLaw::mean_secant_stiffness(double F) const
   {
+    // At 64 angles over the period, the compression that carries F: bisection on the table
+    // force between no compression and the last table compression (F must be inside the
+    // table; beyond it the interpolation would extrapolate).
     double s = 0;
     const int n = 64;
     for (int i = 0; i < n; ++i)
       {
         const double th = theta0_ + period_ * i / n;
-        double lo = 0, hi = d_.back();
-        for (int it = 0; it < 100; ++it)
-          {
-            const double m = 0.5 * (lo + hi);
-            (force(th, m, 0) < F ? lo : hi) = m;
-          }
-        s += F / (0.5 * (lo + hi));
+        const double delta = base::find_root_bisection([&](double d) { return force(th, d, 0) - F; }, 0.0,
+                                                       d_.back(), "mesh-force table: compression carrying the reference load " +
+                                                                    to_string_g(F) + " N at angle " + to_string_g(th) + " rad");
+        s += F / delta;
       }
     return s / n;
   }

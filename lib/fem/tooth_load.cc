@@ -3,6 +3,7 @@
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -29,21 +30,13 @@ namespace gearfem::fem
     for (const int i : tooth.flank_segments(side))
       {
         const auto &sg = tooth.segments()[i];
-        double a = sg.t0, b = sg.t1;
-        double ra = sg.curve->point(a).norm(), rb = sg.curve->point(b).norm();
+        const double ra = sg.curve->point(sg.t0).norm(), rb = sg.curve->point(sg.t1).norm();
         const double lo = std::min(ra, rb), hi = std::max(ra, rb);
         if (r < lo - 1e-12 || r > hi + 1e-12)
           continue;
-        for (int it = 0; it < 200 && std::abs(b - a) > 1e-15 * (1 + std::abs(a)); ++it)
-          {
-            const double m  = 0.5 * (a + b);
-            const double rm = sg.curve->point(m).norm();
-            if ((rm < r) == (ra < r))
-              a = m, ra = rm;
-            else
-              b = m;
-          }
-        const double t = 0.5 * (a + b);
+        // A radius within 1e-12 m outside the piece is its end (the default load radius is
+        // the radius of the flank's last point).
+        const double t = geometry::parameter_at_radius(*sg.curve, sg.t0, sg.t1, std::clamp(r, lo, hi));
         // The outline runs counter-clockwise from t0 to t1: outward normal = direction of
         // travel rotated by -90 deg.
         mesh::Vec2 d = sg.curve->d1(t) * (sg.t1 >= sg.t0 ? 1.0 : -1.0);

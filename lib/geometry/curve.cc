@@ -2,6 +2,7 @@
 #include "geometry/curve.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,12 @@
 
 namespace gearfem::geometry
 {
+  double parameter_at_radius(const Curve &c, double a, double b, double r)
+  {
+    return base::find_root_bisection([&](double t) { return c.point(t).norm() - r; }, a, b,
+                                     "curve parameter at radius r = " + to_string_g(r) + " m");
+  }
+
   Vec2 Curve::d3(double t) const
   {
     // Central difference of the exact second derivative, kept inside the range.

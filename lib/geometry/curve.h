@@ -41,6 +41,14 @@ namespace gearfem::geometry
 
   using CurvePtr = std::shared_ptr<const Curve>;
 
+  /// Curve parameter t between a and b (either order) where |c(t)| = r: the radius r [m]
+  /// must lie between |c(a)| and |c(b)| (an end that lies on the circle is returned as it
+  /// is). Bisection on |c(t)| - r down to the last bit (base::find_root_bisection): the
+  /// result is reproducible to the bit, which matters because it places the ends of tooth
+  /// segments and the mesh vertices at split radii. Throws SolverError naming r, the interval
+  /// and |c| - r at its ends when r is not between the end radii.
+  double parameter_at_radius(const Curve &c, double a, double b, double r);
+
   /// Straight segment from a to b, t in [0, 1].
   class LineSegment : public Curve
   {

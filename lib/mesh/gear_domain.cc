@@ -224,24 +224,15 @@ namespace gearfem::mesh
                                 sg.type == geometry::SegmentType::tip_rounding);
             const double h_flank = coast ? coast_size(p) : contact_size(p, m);
             piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
-            // Split fine flanks at the requested radii (bisection on the radius).
+            // Split fine flanks at the requested radii (those inside the piece).
             std::vector<double> cuts;
             if (is_fine && sg.type == geometry::SegmentType::flank)
               for (const double r : p.flank_split_radii)
                 {
-                  double a = sg.t0, b = sg.t1;
-                  const double ra = sg.curve->point(a).norm(), rb = sg.curve->point(b).norm();
+                  const double ra = sg.curve->point(sg.t0).norm(), rb = sg.curve->point(sg.t1).norm();
                   if (!(r > std::min(ra, rb) + 1e-3 * contact_size(p, m) && r < std::max(ra, rb) - 1e-3 * contact_size(p, m)))
                     continue;
-                  for (int it = 0; it < 200; ++it)
-                    {
-                      const double mid = 0.5 * (a + b);
-                      if ((sg.curve->point(mid).norm() < r) == (ra < r))
-                        a = mid;
-                      else
-                        b = mid;
-                    }
-                  cuts.push_back(0.5 * (a + b));
+                  cuts.push_back(geometry::parameter_at_radius(*sg.curve, sg.t0, sg.t1, r));
                 }
             std::sort(cuts.begin(), cuts.end(), [&](double x, double y) {
               return (sg.t1 >= sg.t0) ? x < y : x > y;

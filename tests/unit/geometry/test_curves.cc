@@ -1,10 +1,12 @@
 // Curves, conjugate generation and its inverse: exactness checks against closed forms.
+#include "base/errors.h"
 #include "geometry/conjugate.h"
 #include "geometry/curve.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 using namespace gearfem::geometry;
 
@@ -98,4 +100,32 @@ TEST(Conjugate, BSplineFlankRoundTrip)
   ConjugateCurve again(rack, r0);
   for (double t : {0.0, 0.25, 0.5, 0.75, 1.0})
     EXPECT_LT((again.point(t) - flank->point(t)).norm(), 1e-12) << "t = " << t;
+}
+
+// parameter_at_radius (the one "curve parameter at a radius" of profile, tooth_load and the
+// gear mesh): on a line x = 0.03 + 0.04 t, y = 0.01 the radius is sqrt(x^2 + y^2), so the
+// parameter at r is (sqrt(r^2 - y^2) - 0.03) / 0.04 in closed form; either parameter order;
+// an end on the circle is returned exactly; a radius outside the curve is a SolverError
+// naming the radius.
+TEST(Curves, ParameterAtRadiusClosedForm)
+{
+  const LineSegment line(Vec2(0.03, 0.01), Vec2(0.07, 0.01));
+  for (double r : {0.035, 0.05, 0.0695})
+    {
+      const double t = (std::sqrt(r * r - 1e-4) - 0.03) / 0.04;
+      EXPECT_NEAR(parameter_at_radius(line, 0.0, 1.0, r), t, 1e-15);
+      EXPECT_NEAR(parameter_at_radius(line, 1.0, 0.0, r), t, 1e-15);
+      EXPECT_NEAR(line.point(parameter_at_radius(line, 0.0, 1.0, r)).norm(), r, 1e-17);
+    }
+  EXPECT_EQ(parameter_at_radius(line, 0.0, 1.0, line.point(1.0).norm()), 1.0);
+  try
+    {
+      parameter_at_radius(line, 0.0, 1.0, 0.08);
+      ADD_FAILURE() << "a radius beyond the curve must throw";
+    }
+  catch (const gearfem::SolverError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("r = 0.08 m"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("does not bracket"), std::string::npos) << e.what();
+    }
 }
