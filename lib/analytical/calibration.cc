@@ -74,8 +74,12 @@ namespace gearfem::analytical
     if (pairs.empty())
       throw SolverError("calibrated mesh: no pair in contact at roll angle " + to_string_g(phi1));
     std::sort(pairs.begin(), pairs.end(), [](const Pair &a, const Pair &b) { return a.gap < b.gap; });
+    // Fixed point on the pair loads (the compliances depend on them through the Hertz
+    // term); a sweep that still changes a load by more than 1e-12 F after 60 passes is an
+    // error, not a result.
     double delta = 0;
-    for (int it = 0; it < 60; ++it)
+    bool converged = false;
+    for (int it = 0; it < 60 && !converged; ++it)
       {
         for (auto &p : pairs)
           {
@@ -120,9 +124,11 @@ namespace gearfem::analytical
             change          = std::max(change, std::abs(Fi - pairs[i].F));
             pairs[i].F      = Fi;
           }
-        if (change <= 1e-12 * F)
-          break;
+        converged = change <= 1e-12 * F;
       }
+    if (!converged)
+      throw SolverError("calibrated mesh: the pair-load iteration did not converge in 60 passes at roll angle " +
+                        to_string_g(phi1) + " rad, load " + to_string_g(F) + " N");
     if (loads)
       {
         loads->clear();
@@ -200,41 +206,38 @@ namespace gearfem::analytical
     return out;
   }
 
-  FitResult fit_factors(const PairCompliance &pairs, const std::vector<SteSample> &samples,
-                        const CalibrationFactors &start, const FitMask &mask)
+  namespace
   {
-    if (samples.empty())
-      throw InputError("calibration samples", "(none)", "at least one FE STE value");
-    for (const auto &s : samples)
-      if (!(s.ste > 0) || !(s.torque > 0))
-        throw InputError("calibration samples", "STE " + to_string_g(s.ste) + " m at " + to_string_g(s.torque) + " N m",
-                         "positive STE and torque");
-    // Parameters: log multipliers; body = x^2 1e-9 m/N; corner radius = x^2 1e-4 m.
-    struct Par
+    /// A fitted factor: its name and which of the five (0 beam, 1 foundation, 2 Hertz,
+    /// 3 body compliance, 4 corner radius).
+    struct FitParameter
     {
       std::string name;
       int which;
     };
-    std::vector<Par> par;
-    if (mask.beam)
-      par.push_back({"beam", 0});
-    if (mask.foundation)
-      par.push_back({"foundation", 1});
-    if (mask.hertz)
-      par.push_back({"hertz", 2});
-    if (mask.body)
-      par.push_back({"body compliance", 3});
-    if (mask.corner_radius)
-      par.push_back({"corner radius", 4});
-    const int p = int(par.size()), n = int(samples.size());
-    if (p == 0)
-      throw InputError("Calibration/Fit factors", "(none)", "at least one factor");
-    if (n <= p)
-      throw InputError("calibration samples", std::to_string(n), "more samples than fitted factors (" + std::to_string(p) + ")");
 
-    auto to_factors = [&](const Eigen::VectorXd &x) {
+    std::vector<FitParameter> fit_parameters(const FitMask &mask)
+    {
+      std::vector<FitParameter> par;
+      if (mask.beam)
+        par.push_back({"beam", 0});
+      if (mask.foundation)
+        par.push_back({"foundation", 1});
+      if (mask.hertz)
+        par.push_back({"hertz", 2});
+      if (mask.body)
+        par.push_back({"body compliance", 3});
+      if (mask.corner_radius)
+        par.push_back({"corner radius", 4});
+      return par;
+    }
+
+    /// Parameters: log multipliers; body = x^2 1e-9 m/N; corner radius = x^2 1e-4 m.
+    CalibrationFactors factors_of(const CalibrationFactors &start, const std::vector<FitParameter> &par,
+                                  const Eigen::VectorXd &x)
+    {
       CalibrationFactors f = start;
-      for (int i = 0; i < p; ++i)
+      for (int i = 0; i < int(par.size()); ++i)
         switch (par[i].which)
           {
             case 0: f.beam = std::exp(x[i]); break;
@@ -244,24 +247,153 @@ namespace gearfem::analytical
             default: f.corner_radius = x[i] * x[i] * 1e-4; break;
           }
       return f;
-    };
-    Eigen::VectorXd x(p);
-    for (int i = 0; i < p; ++i)
-      switch (par[i].which)
+    }
+
+    /// The parameter vector of the start factors (inverse of factors_of; the square-root
+    /// parameters start at 0.3 or more, away from the flat point at 0).
+    Eigen::VectorXd parameters_of(const CalibrationFactors &start, const std::vector<FitParameter> &par)
+    {
+      Eigen::VectorXd x(par.size());
+      for (int i = 0; i < int(par.size()); ++i)
+        switch (par[i].which)
+          {
+            case 0: x[i] = std::log(start.beam); break;
+            case 1: x[i] = std::log(start.foundation); break;
+            case 2: x[i] = std::log(start.hertz); break;
+            case 3: x[i] = std::max(std::sqrt(start.body / 1e-9), 0.3); break;
+            default: x[i] = std::max(std::sqrt(start.corner_radius / 1e-4), 0.3); break;
+          }
+      return x;
+    }
+
+    /// Levenberg-Marquardt from x (in/out) with residual(x) and jacobian(x, r): on return
+    /// x, r, J and cost (= |r|^2) are those of the last accepted step. Returns the number
+    /// of iterations as counted by the fit report (201 when the limit of 200 ends it).
+    template <typename Residual, typename Jacobian>
+    int levenberg_marquardt(const Residual &residual, const Jacobian &jacobian, Eigen::VectorXd &x,
+                            Eigen::VectorXd &r, Eigen::MatrixXd &J, double &cost)
+    {
+      const int p = int(x.size());
+      r           = residual(x);
+      cost        = r.squaredNorm();
+      double lambda = 1e-3;
+      J             = jacobian(x, r);
+      int iterations = 1;
+      for (; iterations <= 200; ++iterations)
         {
-          case 0: x[i] = std::log(start.beam); break;
-          case 1: x[i] = std::log(start.foundation); break;
-          case 2: x[i] = std::log(start.hertz); break;
-          case 3: x[i] = std::max(std::sqrt(start.body / 1e-9), 0.3); break;
-          default: x[i] = std::max(std::sqrt(start.corner_radius / 1e-4), 0.3); break;
+          const Eigen::MatrixXd A = J.transpose() * J;
+          const Eigen::VectorXd g = J.transpose() * r;
+          Eigen::MatrixXd Ad      = A;
+          for (int i = 0; i < p; ++i)
+            Ad(i, i) += lambda * std::max(A(i, i), 1e-12);
+          const Eigen::VectorXd dx = Ad.ldlt().solve(-g);
+          const Eigen::VectorXd xn = x + dx;
+          const Eigen::VectorXd rn = residual(xn);
+          const double cn          = rn.squaredNorm();
+          if (cn < cost)
+            {
+              const bool small = cost - cn <= 1e-14 * std::max(cost, 1e-30) || dx.norm() <= 1e-10 * (1 + x.norm());
+              x = xn, r = rn, cost = cn;
+              lambda = std::max(lambda / 3, 1e-12);
+              J      = jacobian(x, r);
+              if (small)
+                break;
+            }
+          else
+            {
+              lambda *= 5;
+              if (lambda > 1e12)
+                break;
+            }
         }
+      return iterations;
+    }
+
+    /// Standard errors, condition number and identifiability warnings of a converged fit.
+    void add_fit_statistics(const std::vector<FitParameter> &par, const Eigen::MatrixXd &J,
+                            const Eigen::VectorXd &x, double cost, int n, FitResult &res)
+    {
+      const int p = int(par.size());
+      // Standard errors and identifiability from the scaled normal matrix (pseudo-inverse, so
+      // that one undetermined direction does not hide the others).
+      const Eigen::MatrixXd A = J.transpose() * J;
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      const auto sv = svd.singularValues();
+      res.condition = sv[p - 1] > 0 ? sv[0] / sv[p - 1] : 1e300;
+      const double s2 = n > p ? cost / (n - p) : 0.0;
+      Eigen::VectorXd inv_sv(p);
+      std::vector<bool> null_part(p, false);
+      for (int k = 0; k < p; ++k)
+        {
+          const bool null_dir = !(sv[k] > 1e-10 * sv[0]);
+          inv_sv[k] = null_dir ? 0.0 : 1.0 / sv[k];
+          if (null_dir)
+            for (int i = 0; i < p; ++i)
+              if (std::abs(svd.matrixV()(i, k)) > 0.3)
+                null_part[i] = true;
+        }
+      const Eigen::MatrixXd cov = s2 * svd.matrixV() * inv_sv.asDiagonal() * svd.matrixV().transpose();
+      for (int i = 0; i < p; ++i)
+        {
+          res.names.push_back(par[i].name);
+          const double sx = std::sqrt(std::max(cov(i, i), 0.0));
+          double v = 0, se = 0;
+          switch (par[i].which)
+            {
+              case 0: v = res.factors.beam, se = v * sx; break;
+              case 1: v = res.factors.foundation, se = v * sx; break;
+              case 2: v = res.factors.hertz, se = v * sx; break;
+              case 3: v = res.factors.body, se = 2 * std::abs(x[i]) * 1e-9 * sx; break;
+              default: v = res.factors.corner_radius, se = 2 * std::abs(x[i]) * 1e-4 * sx; break;
+            }
+          res.values.push_back(v);
+          res.std_error.push_back(se);
+          if (null_part[i] || (par[i].which <= 2 && v < 1e-3))
+            res.warnings.push_back("factor '" + par[i].name + "' is not identifiable from these samples (the fit drives it to " +
+                                   to_string_g(v) + " or leaves it undetermined): fix it or drop it from Fit factors");
+          else if (v > 0 && se / v > 0.5)
+            res.warnings.push_back("factor '" + par[i].name + "' is poorly determined (standard error " +
+                                   to_string_g(100 * se / v) + " % of its value)");
+        }
+      for (int i = 0; i < p; ++i)
+        for (int j = i + 1; j < p; ++j)
+          {
+            if (null_part[i] || null_part[j])
+              continue;
+            const double c = cov(i, j) / std::sqrt(std::max(cov(i, i) * cov(j, j), 1e-300));
+            if (std::abs(c) > 0.98)
+              res.warnings.push_back("factors '" + par[i].name + "' and '" + par[j].name +
+                                     "' are not separately identifiable (correlation " + to_string_g(c) +
+                                     "): only their combination is determined");
+          }
+      if (res.condition > 1e10)
+        res.warnings.push_back("ill-conditioned fit (condition number " + to_string_g(res.condition) + ")");
+    }
+  } // namespace
+
+  FitResult fit_factors(const PairCompliance &pairs, const std::vector<SteSample> &samples,
+                        const CalibrationFactors &start, const FitMask &mask)
+  {
+    if (samples.empty())
+      throw InputError("calibration samples", "(none)", "at least one FE STE value");
+    for (const auto &s : samples)
+      if (!(s.ste > 0) || !(s.torque > 0))
+        throw InputError("calibration samples", "STE " + to_string_g(s.ste) + " m at " + to_string_g(s.torque) + " N m",
+                         "positive STE and torque");
+    const std::vector<FitParameter> par = fit_parameters(mask);
+    const int p = int(par.size()), n = int(samples.size());
+    if (p == 0)
+      throw InputError("Calibration/Fit factors", "(none)", "at least one factor");
+    if (n <= p)
+      throw InputError("calibration samples", std::to_string(n), "more samples than fitted factors (" + std::to_string(p) + ")");
+
     // A trial step that leaves the admissible range (overflowing multiplier, no load path)
     // gets a huge residual, so that Levenberg-Marquardt rejects it and damps.
     auto residual = [&](const Eigen::VectorXd &xx) {
       Eigen::VectorXd r(n);
       try
         {
-          const CalibratedMesh m(pairs, to_factors(xx));
+          const CalibratedMesh m(pairs, factors_of(start, par, xx));
           for (int i = 0; i < n; ++i)
             r[i] = m.ste(samples[i].roll_angle, samples[i].torque / m.base_radius()) / samples[i].ste - 1;
           if (!r.allFinite())
@@ -286,93 +418,13 @@ namespace gearfem::analytical
     };
 
     FitResult res;
-    Eigen::VectorXd r = residual(x);
-    double cost = r.squaredNorm(), lambda = 1e-3;
-    Eigen::MatrixXd J = jacobian(x, r);
-    for (res.iterations = 1; res.iterations <= 200; ++res.iterations)
-      {
-        const Eigen::MatrixXd A = J.transpose() * J;
-        const Eigen::VectorXd g = J.transpose() * r;
-        Eigen::MatrixXd Ad      = A;
-        for (int i = 0; i < p; ++i)
-          Ad(i, i) += lambda * std::max(A(i, i), 1e-12);
-        const Eigen::VectorXd dx = Ad.ldlt().solve(-g);
-        const Eigen::VectorXd xn = x + dx;
-        const Eigen::VectorXd rn = residual(xn);
-        const double cn          = rn.squaredNorm();
-        if (cn < cost)
-          {
-            const bool small = cost - cn <= 1e-14 * std::max(cost, 1e-30) || dx.norm() <= 1e-10 * (1 + x.norm());
-            x = xn, r = rn, cost = cn;
-            lambda = std::max(lambda / 3, 1e-12);
-            J      = jacobian(x, r);
-            if (small)
-              break;
-          }
-        else
-          {
-            lambda *= 5;
-            if (lambda > 1e12)
-              break;
-          }
-      }
-    res.factors = to_factors(x);
+    Eigen::VectorXd x = parameters_of(start, par), r;
+    Eigen::MatrixXd J;
+    double cost = 0;
+    res.iterations = levenberg_marquardt(residual, jacobian, x, r, J, cost);
+    res.factors = factors_of(start, par, x);
     res.rms     = std::sqrt(cost / n);
-
-    // Standard errors and identifiability from the scaled normal matrix (pseudo-inverse, so
-    // that one undetermined direction does not hide the others).
-    const Eigen::MatrixXd A = J.transpose() * J;
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    const auto sv = svd.singularValues();
-    res.condition = sv[p - 1] > 0 ? sv[0] / sv[p - 1] : 1e300;
-    const double s2 = n > p ? cost / (n - p) : 0.0;
-    Eigen::VectorXd inv_sv(p);
-    std::vector<bool> null_part(p, false);
-    for (int k = 0; k < p; ++k)
-      {
-        const bool null_dir = !(sv[k] > 1e-10 * sv[0]);
-        inv_sv[k] = null_dir ? 0.0 : 1.0 / sv[k];
-        if (null_dir)
-          for (int i = 0; i < p; ++i)
-            if (std::abs(svd.matrixV()(i, k)) > 0.3)
-              null_part[i] = true;
-      }
-    const Eigen::MatrixXd cov = s2 * svd.matrixV() * inv_sv.asDiagonal() * svd.matrixV().transpose();
-    for (int i = 0; i < p; ++i)
-      {
-        res.names.push_back(par[i].name);
-        const double sx = std::sqrt(std::max(cov(i, i), 0.0));
-        double v = 0, se = 0;
-        switch (par[i].which)
-          {
-            case 0: v = res.factors.beam, se = v * sx; break;
-            case 1: v = res.factors.foundation, se = v * sx; break;
-            case 2: v = res.factors.hertz, se = v * sx; break;
-            case 3: v = res.factors.body, se = 2 * std::abs(x[i]) * 1e-9 * sx; break;
-            default: v = res.factors.corner_radius, se = 2 * std::abs(x[i]) * 1e-4 * sx; break;
-          }
-        res.values.push_back(v);
-        res.std_error.push_back(se);
-        if (null_part[i] || (par[i].which <= 2 && v < 1e-3))
-          res.warnings.push_back("factor '" + par[i].name + "' is not identifiable from these samples (the fit drives it to " +
-                                 to_string_g(v) + " or leaves it undetermined): fix it or drop it from Fit factors");
-        else if (v > 0 && se / v > 0.5)
-          res.warnings.push_back("factor '" + par[i].name + "' is poorly determined (standard error " +
-                                 to_string_g(100 * se / v) + " % of its value)");
-      }
-    for (int i = 0; i < p; ++i)
-      for (int j = i + 1; j < p; ++j)
-        {
-          if (null_part[i] || null_part[j])
-            continue;
-          const double c = cov(i, j) / std::sqrt(std::max(cov(i, i) * cov(j, j), 1e-300));
-          if (std::abs(c) > 0.98)
-            res.warnings.push_back("factors '" + par[i].name + "' and '" + par[j].name +
-                                   "' are not separately identifiable (correlation " + to_string_g(c) +
-                                   "): only their combination is determined");
-        }
-    if (res.condition > 1e10)
-      res.warnings.push_back("ill-conditioned fit (condition number " + to_string_g(res.condition) + ")");
+    add_fit_statistics(par, J, x, cost, n, res);
     return res;
   }
 } // namespace gearfem::analytical

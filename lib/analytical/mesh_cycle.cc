@@ -82,9 +82,15 @@ namespace gearfem::analytical
       if (std::abs(f(x1)) > 1e-12 * load)
         {
           // The upper end has a margin for the round-off of the path-only iteration (1e-12).
-          x1 = base::find_root(f, 0.0, x1 * (1 + 1e-9), 1e-14, 100,
-                               "mesh position with corner contact at roll angle " + to_string_g(phi) + " rad",
-                               &it);
+          // (The roll angle is added to the message only on failure: this runs per position.)
+          try
+            {
+              x1 = base::find_root(f, 0.0, x1 * (1 + 1e-9), 1e-14, 100, "mesh position with corner contact", &it);
+            }
+          catch (const SolverError &e)
+            {
+              throw SolverError(std::string(e.what()) + " at roll angle " + to_string_g(phi) + " rad");
+            }
         }
       MeshState s;
       s.roll_angle = phi, s.load = load, s.deflection = x1, s.iterations = path.iterations + it;

@@ -49,42 +49,64 @@ namespace gearfem::analytical
     throw InputError("rating report: no row " + standard + " " + symbol);
   }
 
-  RatingReport rate(const geometry::GearPair &pair, const RatingInput &in)
+  namespace
   {
-    if (in.torques.empty())
-      throw InputError("Rating/Pinion torques", "(empty)", "one or more values > 0 N m");
-    for (double T : in.torques)
-      require_greater("Rating/Pinion torques", T, 0.0, "N m");
-    for (auto f : {std::pair<const char *, double>{"K_o", in.K_o}, {"K_v", in.K_v}, {"K_s", in.K_s},
-                   {"Z_R", in.Z_R}, {"K_B", in.K_B}, {"K_A", in.K_A}, {"ISO K_v", in.K_v_iso},
-                   {"ISO K_Hbeta", in.K_Hbeta}})
-      check_factor(f.first, f.second);
-    if (in.K_H < 0.0)
-      throw InputError("Rating/AGMA K_H", to_string_g(in.K_H), "0 (computed) or >= 1");
+    /// The pair quantities both standards start from (SI units).
+    struct RatingContext
+    {
+      const geometry::GearPair &pair;
+      const RatingInput &in;
+      const geometry::ToothProfile &p1, &p2;
+      const geometry::GearParameters &g1, &g2;
+      int z1, z2;
+      double m, alpha, b, a, u, dw1, d1, ra1, ra2, eps;
 
-    const geometry::ToothProfile &p1 = pair.gear(1), &p2 = pair.gear(2);
-    const geometry::GearParameters &g1 = p1.parameters(), &g2 = p2.parameters();
-    const int z1 = g1.teeth, z2 = g2.teeth;
-    const double m = g1.rack.module, alpha = g1.rack.pressure_angle;
-    const double b = std::min(g1.face_width, g2.face_width);
-    require_greater("Gear 1/Face width", b, 0.0, "m");
-    const double a = pair.center_distance(), u = double(z2) / z1;
-    const double dw1 = 2.0 * a / (u + 1.0), d1 = m * z1;
-    const double ra1 = p1.radii().tip, ra2 = p2.radii().tip;
-    const double eps = pair.contact_ratio();
-
-    RatingReport rep;
-    rep.torques = in.torques;
-    const std::size_t n = in.torques.size();
-    auto per_torque = [&](auto f) {
-      std::vector<double> v(n);
-      for (std::size_t i = 0; i < n; ++i)
-        v[i] = f(in.torques[i]);
-      return v;
+      RatingContext(const geometry::GearPair &pr, const RatingInput &input)
+        : pair(pr), in(input), p1(pr.gear(1)), p2(pr.gear(2)), g1(p1.parameters()), g2(p2.parameters())
+      {
+        z1 = g1.teeth, z2 = g2.teeth;
+        m = g1.rack.module, alpha = g1.rack.pressure_angle;
+        b = std::min(g1.face_width, g2.face_width);
+        require_greater("Gear 1/Face width", b, 0.0, "m");
+        a = pair.center_distance(), u = double(z2) / z1;
+        dw1 = 2.0 * a / (u + 1.0), d1 = m * z1;
+        ra1 = p1.radii().tip, ra2 = p2.radii().tip;
+        eps = pair.contact_ratio();
+      }
+      /// f(T) for every pinion torque T.
+      template <typename F>
+      std::vector<double> per_torque(F f) const
+      {
+        std::vector<double> v(in.torques.size());
+        for (std::size_t i = 0; i < v.size(); ++i)
+          v[i] = f(in.torques[i]);
+        return v;
+      }
     };
 
-    // ------------------------------------------------------------------ AGMA
+    void check_rating_input(const RatingInput &in)
     {
+      if (in.torques.empty())
+        throw InputError("Rating/Pinion torques", "(empty)", "one or more values > 0 N m");
+      for (double T : in.torques)
+        require_greater("Rating/Pinion torques", T, 0.0, "N m");
+      for (auto f : {std::pair<const char *, double>{"K_o", in.K_o}, {"K_v", in.K_v}, {"K_s", in.K_s},
+                     {"Z_R", in.Z_R}, {"K_B", in.K_B}, {"K_A", in.K_A}, {"ISO K_v", in.K_v_iso},
+                     {"ISO K_Hbeta", in.K_Hbeta}})
+        check_factor(f.first, f.second);
+      if (in.K_H < 0.0)
+        throw InputError("Rating/AGMA K_H", to_string_g(in.K_H), "0 (computed) or >= 1");
+    }
+
+    /// AGMA 2101-D04 / 908-B89 rows (seed 001 chapter 4).
+    void add_agma_rows(const RatingContext &c, RatingReport &rep)
+    {
+      const RatingInput &in = c.in;
+      const geometry::GearPair &pair = c.pair;
+      const geometry::GearParameters &g1 = c.g1, &g2 = c.g2;
+      const int z1 = c.z1, z2 = c.z2;
+      const double m = c.m, alpha = c.alpha, b = c.b, a = c.a, dw1 = c.dw1, ra1 = c.ra1, ra2 = c.ra2;
+      auto per_torque = [&c](auto f) { return c.per_torque(f); };
       Builder B{rep, "AGMA"};
       const agma::LineOfAction l = agma::line_of_action(z1, z2, m, alpha, ra1, ra2, a);
       const double ZI = agma::geometry_factor_I(l);
@@ -147,8 +169,15 @@ namespace gearfem::analytical
         }
     }
 
-    // ------------------------------------------------------------------ ISO 6336
+    /// ISO 6336-1/2/3 rows (method B).
+    void add_iso6336_rows(const RatingContext &c, RatingReport &rep)
     {
+      const RatingInput &in = c.in;
+      const geometry::GearPair &pair = c.pair;
+      const geometry::GearParameters &g1 = c.g1, &g2 = c.g2;
+      const int z1 = c.z1, z2 = c.z2;
+      const double m = c.m, alpha = c.alpha, b = c.b, d1 = c.d1, ra1 = c.ra1, ra2 = c.ra2, eps = c.eps;
+      auto per_torque = [&c](auto f) { return c.per_torque(f); };
       Builder B{rep, "ISO 6336"};
       const double db1 = 2 * pair.base_radius(1), db2 = 2 * pair.base_radius(2);
       iso6336::StiffnessInput si;
@@ -258,6 +287,16 @@ namespace gearfem::analytical
                 per_torque([&](double T) { return 2 * T / d1 / (b * m) * ra.Y_F * ra.Y_S * Yeps / 1e6; }));
         }
     }
+  } // namespace
+
+  RatingReport rate(const geometry::GearPair &pair, const RatingInput &in)
+  {
+    check_rating_input(in);
+    const RatingContext c(pair, in);
+    RatingReport rep;
+    rep.torques = in.torques;
+    add_agma_rows(c, rep);
+    add_iso6336_rows(c, rep);
     return rep;
   }
 

@@ -143,32 +143,35 @@ namespace gearfem::base
                                 "iteration limit " + std::to_string(max_iter) + " reached");
   }
 
-  /// Bisection of [lo, hi] without the bracket check (the loop of find_root_bisection): `lo_negative`
-  /// says on which end f < 0. For callers that established the bracket themselves (and
-  /// accept an end point within round-off of the root, where f has no clean sign change).
+  /// Bisection of [lo, hi] without the bracket check (the loop of find_root_bisection):
+  /// `lo_negative` says on which end f < 0. For callers that established the bracket
+  /// themselves from samples.
   template <typename F>
   double bisect_bracket(F &&f, double lo, double hi, bool lo_negative, const std::string &what,
-                       double x_tol = 0.0, int max_iter = 2200)
+                        double x_tol = 0.0, int max_iter = 2200)
   {
     for (int it = 0; it < max_iter; ++it)
       {
         const double m = 0.5 * (lo + hi);
-        if (m == lo || m == hi || std::abs(hi - lo) <= x_tol)
+        if (m == lo || m == hi)
           return m;
         const double fm = f(m);
         if (std::isnan(fm))
           detail::throw_not_converged(what, "bisection", lo, hi, it, "f is NaN at " + to_string_g(m));
         ((fm < 0) == lo_negative ? lo : hi) = m;
+        if (std::abs(hi - lo) <= x_tol * std::max(1.0, std::abs(m)))
+          return 0.5 * (lo + hi);
       }
     detail::throw_not_converged(what, "bisection", lo, hi, max_iter,
                                 "iteration limit " + std::to_string(max_iter) + " reached");
   }
-  /// Root of f in [lo, hi] by bisection until the bracket is adjacent doubles (or no wider
-  /// than x_tol); returns the midpoint rounded, which is a bracket end (an end where f is
-  /// exactly zero is returned as it is). The new end replaced
-  /// is the one where f has the sign of f(mid) (f(mid) = 0 counts as positive). Deterministic
-  /// to the last bit; every finite bracket collapses within 2200 halvings. Throws SolverError
-  /// if f does not change sign, f(mid) is NaN, or max_iter halvings do not suffice.
+  /// Root of f in [lo, hi] by bisection until the bracket is adjacent doubles, or (x_tol > 0)
+  /// until a halving leaves it no wider than x_tol max(1, |mid|); returns the midpoint of the
+  /// final bracket (for adjacent doubles, one of them). An end where f is exactly zero is
+  /// returned as it is. The end replaced by mid is the one where f has the sign of f(mid)
+  /// (f(mid) = 0 counts as positive). Deterministic to the last bit; every finite bracket
+  /// collapses within 2200 halvings. Throws SolverError if f does not change sign, f(mid) is
+  /// NaN, or max_iter halvings do not suffice.
   template <typename F>
   double find_root_bisection(F &&f, double lo, double hi, const std::string &what,
                              double x_tol = 0.0, int max_iter = 2200)

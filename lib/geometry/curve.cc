@@ -11,10 +11,10 @@
 
 namespace gearfem::geometry
 {
-  double parameter_at_radius(const Curve &c, double a, double b, double r)
+  double parameter_at_radius(const Curve &c, double a, double b, double r, double t_tol)
   {
     return base::find_root_bisection([&](double t) { return c.point(t).norm() - r; }, a, b,
-                                     "curve parameter at radius r = " + to_string_g(r) + " m");
+                                     "curve parameter at radius r = " + to_string_g(r) + " m", t_tol);
   }
 
   Vec2 Curve::d3(double t) const

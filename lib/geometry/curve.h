@@ -43,11 +43,13 @@ namespace gearfem::geometry
 
   /// Curve parameter t between a and b (either order) where |c(t)| = r: the radius r [m]
   /// must lie between |c(a)| and |c(b)| (an end that lies on the circle is returned as it
-  /// is). Bisection on |c(t)| - r down to the last bit (base::find_root_bisection): the
-  /// result is reproducible to the bit, which matters because it places the ends of tooth
-  /// segments and the mesh vertices at split radii. Throws SolverError naming r, the interval
-  /// and |c| - r at its ends when r is not between the end radii.
-  double parameter_at_radius(const Curve &c, double a, double b, double r);
+  /// is). Bisection on |c(t)| - r (base::find_root_bisection), by default down to the last
+  /// bit; with t_tol > 0 it stops once a halving leaves the bracket no wider than
+  /// t_tol max(1, |t|). Bisection makes the result reproducible to the bit, which matters
+  /// because it places the ends of tooth segments and the mesh vertices at split radii (a
+  /// last-bit change of the outline changes the gmsh mesh). Throws SolverError naming r,
+  /// the interval and |c| - r at its ends when r is not between the end radii.
+  double parameter_at_radius(const Curve &c, double a, double b, double r, double t_tol = 0.0);
 
   /// Straight segment from a to b, t in [0, 1].
   class LineSegment : public Curve

@@ -3,6 +3,7 @@
 #include "geometry/pair.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 #include "base/units.h"
 #include "geometry/conjugate.h"
 
@@ -24,6 +25,13 @@ namespace gearfem::geometry
                   std::sin(a) * p.x() + std::cos(a) * p.y());
     }
     std::string mm(double v) { return to_string_g(v / units::mm) + " mm"; }
+    /// Circular tooth thickness on the reference circle with profile shift and thickness
+    /// allowance [m] (module m and pressure angle alpha of the pair).
+    double reference_thickness(const GearParameters &g, double m, double alpha)
+    {
+      const double p = units::pi * m;
+      return p / 2 + 2 * g.profile_shift * m * std::tan(alpha) - g.thickness_allowance;
+    }
   } // namespace
 
   Vec2 Placement::apply(const Vec2 &x) const { return centre + rotate(x, angle); }
@@ -65,6 +73,14 @@ namespace gearfem::geometry
     : g1_(std::move(gear1))
     , g2_(std::move(gear2))
   {
+    set_centre_distance(pair);
+    set_backlash();
+    set_path_of_contact(pair);
+    check_design();
+  }
+
+  void GearPair::set_centre_distance(const PairParameters &pair)
+  {
     const auto &p1 = g1_.parameters(), &p2 = g2_.parameters();
     if (p1.rack.module != p2.rack.module)
       throw InputError("Rack/Module", mm(p2.rack.module), mm(p1.rack.module),
@@ -83,8 +99,7 @@ namespace gearfem::geometry
     const std::string a_name = "Pair/Centre distance";
 
     // Zero-backlash centre distance for the actual thicknesses (shifts and allowances).
-    const double s1 = p / 2 + 2 * p1.profile_shift * m * std::tan(alpha) - p1.thickness_allowance;
-    const double s2 = p / 2 + 2 * p2.profile_shift * m * std::tan(alpha) - p2.thickness_allowance;
+    const double s1 = reference_thickness(p1, m, alpha), s2 = reference_thickness(p2, m, alpha);
     {
       const double inv0 = inv(alpha) + (s1 + s2 - p) / (m * (z1 + z2));
       if (!(inv0 > 0))
@@ -106,6 +121,16 @@ namespace gearfem::geometry
     alpha_w_ = std::acos((rb1 + rb2) / a_);
     rw1_     = rb1 / std::cos(alpha_w_);
     rw2_     = rb2 / std::cos(alpha_w_);
+  }
+
+  void GearPair::set_backlash()
+  {
+    const auto  &p1 = g1_.parameters(), &p2 = g2_.parameters();
+    const int    z1 = p1.teeth;
+    const double m = p1.rack.module, alpha = p1.rack.pressure_angle;
+    const double r01 = g1_.radii().reference, r02 = g2_.radii().reference;
+    const double s1 = reference_thickness(p1, m, alpha), s2 = reference_thickness(p2, m, alpha);
+    const std::string a_name = "Pair/Centre distance";
 
     // Thicknesses on the working pitch circles and the backlash.
     double sw1, sw2;
@@ -129,6 +154,15 @@ namespace gearfem::geometry
                          " um");
     phase1_ = -sw1 / (2 * rw1_);
     phase2_ = units::pi - sw2 / (2 * rw2_);
+  }
+
+  void GearPair::set_path_of_contact(const PairParameters &pair)
+  {
+    const auto  &p1 = g1_.parameters(), &p2 = g2_.parameters();
+    const double rb1 = base_radius(1), rb2 = base_radius(2);
+    const double r01 = g1_.radii().reference;
+    const double ra1 = g1_.radii().tip, ra2 = g2_.radii().tip;
+    const std::string a_name = "Pair/Centre distance";
 
     // Line of action (pair frame): T1 = rb1 (sin aw, cos aw), direction d = (-cos aw, sin aw).
     const double sa = std::sin(alpha_w_), ca = std::cos(alpha_w_);
@@ -174,15 +208,8 @@ namespace gearfem::geometry
                 return phi_of(pc, b);
               if ((fa < 0) == (fb < 0))
                 continue;
-              for (int i = 0; i < 200; ++i)
-                {
-                  const double c = 0.5 * (a + b), fc = f(pt(pc, c));
-                  if ((fc < 0) == (fa < 0))
-                    a = c, fa = fc;
-                  else
-                    b = c;
-                }
-              return phi_of(pc, 0.5 * (a + b));
+              return phi_of(pc, base::bisect_bracket([&](double t) { return f(pt(pc, t)); }, a, b, fa < 0,
+                                                     "end of the path of contact"));
             }
           return std::numeric_limits<double>::quiet_NaN();
         };
@@ -218,6 +245,16 @@ namespace gearfem::geometry
     };
     loa_ = {make("T1", 0.0), make("T2", T1T2), make("A", gA), make("B", gE - pb),
             make("C", gC),   make("D", gA + pb), make("E", gE)};
+  }
+
+  void GearPair::check_design()
+  {
+    const auto  &p1 = g1_.parameters(), &p2 = g2_.parameters();
+    const double m = p1.rack.module;
+    const double rb1 = base_radius(1), rb2 = base_radius(2);
+    const double ra1 = g1_.radii().tip, ra2 = g2_.radii().tip;
+    const double T1T2 = a_ * std::sin(alpha_w_), gA = point("A").g, gE = point("E").g;
+    const std::string a_name = "Pair/Centre distance";
 
     // Design checks on the path of contact. k_min: the tip shortening of the mate that
     // brings its tip circle to radius r_max (involute pairs).
@@ -374,15 +411,7 @@ namespace gearfem::geometry
           return {j, b};
         if ((fa < 0) == (fb < 0))
           continue;
-        for (int i = 0; i < 200; ++i)
-          {
-            const double c = 0.5 * (a + b), fc = f(c);
-            if ((fc < 0) == (fa < 0))
-              a = c, fa = fc;
-            else
-              b = c;
-          }
-        return {j, 0.5 * (a + b)};
+        return {j, base::bisect_bracket(f, a, b, fa < 0, "path parameter at pinion position " + to_string_g(phi1))};
       }
     throw SolverError("pinion position " + to_string_g(phi1) + " rad is outside the generated flank");
   }

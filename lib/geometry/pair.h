@@ -109,6 +109,16 @@ namespace gearfem::geometry
     std::pair<int, double>      path_parameter(double phi1) const;
 
     double signed_gap(double beta, double phi1) const;
+
+  private:
+    /// Constructor phases, in this order: the centre distance (given or from the shifts)
+    /// with its checks and the working pitch circles; the backlash and body phases; the
+    /// path of contact, contact ratio and line-of-action points; the design checks on the
+    /// path (interference, undercut, form circle, tip clearance).
+    void set_centre_distance(const PairParameters &pair);
+    void set_backlash();
+    void set_path_of_contact(const PairParameters &pair);
+    void check_design();
   };
 
   /// A short hex fingerprint (FNV-1a, 64 bit) of the pair's defining numbers: teeth, module,

@@ -168,6 +168,291 @@ namespace gearfem::mesh
     }
   } // namespace
 
+  namespace
+  {
+    /// The gmsh model of a Domain: curve tags and the pieces they came from.
+    struct GmshModel
+    {
+      std::map<int, int> curve_to_piece; ///< gmsh curve tag -> index in MeshData::pieces
+      std::vector<int>   piece_to_curve; ///< index in MeshData::pieces -> gmsh curve tag
+      int                surface = -1;
+    };
+
+    /// Phase 1: points, curves (a spline through samples, or a line), loops and the plane
+    /// surface; the pieces are copied to out.pieces in curve order.
+    GmshModel build_geometry(const Domain &domain, const MeshingOptions &options, MeshData &out)
+    {
+      namespace geo = gmsh::model::geo;
+      GmshModel m;
+      std::vector<int> loop_tags;
+      for (const auto &loop : domain.loops)
+        {
+          std::vector<int> curves;
+          const int first_point = -1;
+          int prev_end          = first_point, loop_start = -1;
+          for (std::size_t i = 0; i < loop.pieces.size(); ++i)
+            {
+              const auto &piece = loop.pieces[i];
+              const int n       = piece.straight ? 1 : std::max(2, options.samples_per_piece);
+              std::vector<int> pts;
+              for (int j = 0; j <= n; ++j)
+                {
+                  if (j == 0 && prev_end >= 0)
+                    {
+                      pts.push_back(prev_end);
+                      continue;
+                    }
+                  if (j == n && i + 1 == loop.pieces.size())
+                    {
+                      pts.push_back(loop_start);
+                      continue;
+                    }
+                  const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / n);
+                  pts.push_back(geo::addPoint(p.x(), p.y(), 0.0));
+                  if (i == 0 && j == 0)
+                    loop_start = pts.back();
+                }
+              prev_end      = pts.back();
+              const int tag = piece.straight ? geo::addLine(pts[0], pts[1]) : geo::addSpline(pts);
+              curves.push_back(tag);
+              m.curve_to_piece[tag] = int(out.pieces.size());
+              m.piece_to_curve.push_back(tag);
+              out.pieces.push_back(piece);
+            }
+          loop_tags.push_back(geo::addCurveLoop(curves));
+        }
+      m.surface = geo::addPlaneSurface(loop_tags);
+      geo::synchronize();
+      return m;
+    }
+
+    /// Phase 2: physical groups, one per boundary id, plus the body.
+    void add_physical_groups(const GmshModel &m, const MeshData &out)
+    {
+      std::map<unsigned int, std::vector<int>> groups;
+      for (const auto &[tag, piece] : m.curve_to_piece)
+        groups[out.pieces[piece].boundary_id].push_back(tag);
+      for (const auto &[id, tags] : groups)
+        {
+          gmsh::model::addPhysicalGroup(1, tags, int(id));
+          gmsh::model::setPhysicalName(1, int(id), boundary::name(id));
+        }
+      gmsh::model::addPhysicalGroup(2, {m.surface}, 1);
+      gmsh::model::setPhysicalName(2, 1, "body");
+    }
+
+    /// Phase 3: size field. For each distinct fine size, distance to its pieces and a
+    /// threshold growing linearly (h + (g - 1) d, the continuous form of a geometric
+    /// progression); the minimum with h_body is the background mesh.
+    void add_size_field(const Domain &domain, const GmshModel &m, const MeshData &out)
+    {
+      std::map<double, std::vector<double>> by_size;
+      for (const auto &[tag, piece] : m.curve_to_piece)
+        {
+          const double h = out.pieces[piece].size;
+          if (h > 0 && h < domain.h_body)
+            by_size[h].push_back(tag);
+        }
+      namespace field = gmsh::model::mesh::field;
+      std::vector<double> thresholds;
+      for (const auto &[h, tags] : by_size)
+        {
+          const int dist = field::add("Distance");
+          field::setNumbers(dist, "CurvesList", tags);
+          field::setNumber(dist, "NumPointsPerCurve", 400);
+          const int thr = field::add("Threshold");
+          field::setNumber(thr, "InField", dist);
+          field::setNumber(thr, "SizeMin", h);
+          field::setNumber(thr, "SizeMax", domain.h_body);
+          field::setNumber(thr, "DistMin", 0.5 * h);
+          field::setNumber(thr, "DistMax", 0.5 * h + (domain.h_body - h) / (domain.growth - 1.0));
+          thresholds.push_back(thr);
+        }
+      const int constant = field::add("MathEval");
+      field::setString(constant, "F", to_string_g(domain.h_body));
+      thresholds.push_back(constant);
+      const int fmin = field::add("Min");
+      field::setNumbers(fmin, "FieldsList", thresholds);
+      field::setAsBackgroundMesh(fmin);
+    }
+
+    /// Phase 4: node counts per curve from the arc length and the piece size, with an even
+    /// number of edges per loop (added to the loop's longest curve): an odd boundary cannot
+    /// be closed by quads only, and Blossom full-quad then leaves triangles.
+    void set_curve_node_counts(const Domain &domain, const GmshModel &m, const MeshData &out)
+    {
+      std::size_t first = 0;
+      for (std::size_t l = 0; l < domain.loops.size(); ++l)
+        {
+          const std::size_t n_pieces = domain.loops[l].pieces.size();
+          std::vector<int> n_edges(n_pieces);
+          std::vector<double> lengths(n_pieces);
+          int total = 0;
+          for (std::size_t i = 0; i < n_pieces; ++i)
+            {
+              const auto &piece = out.pieces[first + i];
+              const double h = piece.size > 0 ? std::min(piece.size, domain.h_body) : domain.h_body;
+              double length  = 0;
+              const int ns   = 256;
+              Vec2 prev      = piece.start();
+              for (int j = 1; j <= ns; ++j)
+                {
+                  const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / ns);
+                  length += (p - prev).norm();
+                  prev = p;
+                }
+              lengths[i] = length / h;
+              n_edges[i] = std::max(1, int(std::lround(length / h)));
+              total += n_edges[i];
+            }
+          if (total % 2 == 1)
+            ++n_edges[std::max_element(lengths.begin(), lengths.end()) - lengths.begin()];
+          for (std::size_t i = 0; i < n_pieces; ++i)
+            gmsh::model::mesh::setTransfiniteCurve(m.piece_to_curve[first + i], n_edges[i] + 1);
+          first += n_pieces;
+        }
+    }
+
+    /// Phase 5: generate the all-quad mesh, with the fallbacks below; sets out.subdivided
+    /// when only the subdivision fallback gave quads.
+    void generate_all_quad(const MeshingOptions &options, const GmshModel &m, MeshData &out)
+    {
+      gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps);
+      gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+      gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+      gmsh::option::setNumber("Mesh.Algorithm", options.algorithm);
+      gmsh::option::setNumber("Mesh.RecombineAll", 1);
+      gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
+
+      gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+      gmsh::model::mesh::generate(2);
+      // Blossom recombination of a mesh with even boundary loops gives quads only; should
+      // a triangle remain, remesh at twice the size and split every element into quads
+      // (Mesh.SubdivisionAlgorithm = 1), which guarantees an all-quad mesh (lower quality).
+      auto n_non_quads = [&]() {
+        std::vector<int> t;
+        std::vector<std::vector<std::size_t>> et, en;
+        gmsh::model::mesh::getElements(t, et, en, 2, m.surface);
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < t.size(); ++k)
+          if (t[k] != 3)
+            n += et[k].size();
+        return n;
+      };
+      // Blossom occasionally fails on a valid triangulation: retry Frontal-Delaunay with a
+      // perturbed triangulation (random factor), then MeshAdapt, before subdividing.
+      for (int attempt = 1; attempt <= 3 && n_non_quads() > 0; ++attempt)
+        {
+          gmsh::model::mesh::clear();
+          gmsh::option::setNumber("Mesh.RandomFactor", 1e-9 * (1 + 10 * attempt));
+          gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps + attempt);
+          gmsh::model::mesh::generate(2);
+        }
+      if (n_non_quads() > 0 && options.algorithm != 1)
+        {
+          gmsh::model::mesh::clear();
+          gmsh::option::setNumber("Mesh.Algorithm", 1);
+          gmsh::model::mesh::generate(2);
+        }
+      if (n_non_quads() > 0)
+        {
+          gmsh::model::mesh::clear();
+          gmsh::option::setNumber("Mesh.MeshSizeFactor", 2.0);
+          gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
+          gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+          gmsh::model::mesh::generate(2);
+          out.subdivided = true;
+        }
+    }
+
+    /// Phase 6: vertices, counter-clockwise quads and boundary edges per curve from gmsh.
+    void extract_mesh(const GmshModel &m, MeshData &out)
+    {
+      // Nodes.
+      std::vector<std::size_t> node_tags;
+      std::vector<double> coords, param;
+      gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, true, false);
+      std::map<std::size_t, unsigned int> index;
+      for (std::size_t i = 0; i < node_tags.size(); ++i)
+        if (index.emplace(node_tags[i], unsigned(out.vertices.size())).second)
+          out.vertices.emplace_back(coords[3 * i], coords[3 * i + 1]);
+
+      // Quads.
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elem_tags, elem_nodes;
+      gmsh::model::mesh::getElements(types, elem_tags, elem_nodes, 2, m.surface);
+      for (std::size_t k = 0; k < types.size(); ++k)
+        {
+          if (types[k] != 3)
+            gmsh_failure("left " + std::to_string(elem_tags[k].size()) +
+                           " non-quadrilateral elements (type " + std::to_string(types[k]) + ")",
+                         "recombination failed; change the mesh sizes");
+          for (std::size_t e = 0; e < elem_tags[k].size(); ++e)
+            {
+              std::array<unsigned int, 4> q;
+              for (int j = 0; j < 4; ++j)
+                q[j] = index.at(elem_nodes[k][4 * e + j]);
+              // gmsh order is cyclic; make it counter-clockwise, then lexicographic.
+              const Vec2 &a = out.vertices[q[0]], &b = out.vertices[q[1]], &c = out.vertices[q[2]],
+                         &d  = out.vertices[q[3]];
+              const double area2 = (c - a).x() * (d - b).y() - (c - a).y() * (d - b).x();
+              if (area2 < 0)
+                std::swap(q[1], q[3]);
+              out.cells.push_back({q[0], q[1], q[3], q[2]});
+            }
+        }
+      if (out.cells.empty())
+        gmsh_failure("produced no elements", "");
+
+      // Boundary edges per curve.
+      for (const auto &[tag, piece] : m.curve_to_piece)
+        {
+          gmsh::model::mesh::getElements(types, elem_tags, elem_nodes, 1, tag);
+          for (std::size_t k = 0; k < types.size(); ++k)
+            for (std::size_t e = 0; e < elem_tags[k].size(); ++e)
+              out.boundary_edges.push_back({index.at(elem_nodes[k][2 * e]),
+                                            index.at(elem_nodes[k][2 * e + 1]),
+                                            out.pieces[piece].boundary_id, piece});
+        }
+    }
+
+    /// Phase 7 (optional): the .msh file, written through a temporary file and renamed.
+    void write_msh(const std::filesystem::path &target)
+    {
+      auto tmp = target.parent_path() /
+                 ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + ".msh");
+      gmsh::write(tmp.string());
+      std::filesystem::rename(tmp, target);
+    }
+
+    /// Phase 8: snap boundary vertices onto the exact curves (gmsh meshed a spline through
+    /// samples); a vertex shared by two pieces is their common end point.
+    void snap_boundary_vertices(MeshData &out)
+    {
+      std::vector<int> on_piece(out.vertices.size(), -1);
+      std::vector<char> corner(out.vertices.size(), 0);
+      for (const auto &e : out.boundary_edges)
+        for (unsigned v : {e.v0, e.v1})
+          {
+            if (on_piece[v] >= 0 && on_piece[v] != e.piece)
+              corner[v] = 1;
+            on_piece[v] = e.piece;
+          }
+      for (std::size_t v = 0; v < out.vertices.size(); ++v)
+        {
+          if (on_piece[v] < 0)
+            continue;
+          const auto &piece = out.pieces[on_piece[v]];
+          Vec2 &x           = out.vertices[v];
+          if (corner[v])
+            x = (x - piece.start()).norm() < (x - piece.end()).norm() ? piece.start() : piece.end();
+          else if (!piece.straight)
+            x = piece.curve.point(piece.curve.closest_parameter(x, piece.t0, piece.t1));
+        }
+    }
+  } // namespace
+
   MeshData mesh_domain(const Domain &domain, const MeshingOptions &options)
   {
     validate_domain(domain);
@@ -178,230 +463,14 @@ namespace gearfem::mesh
     try
       {
         gmsh::model::add(options.model_name);
-        namespace geo = gmsh::model::geo;
-        std::vector<int> loop_tags;
-        std::map<int, int> curve_to_piece;
-        std::vector<int> piece_to_curve;
-        for (const auto &loop : domain.loops)
-          {
-            std::vector<int> curves;
-            const int first_point = -1;
-            int prev_end          = first_point, loop_start = -1;
-            for (std::size_t i = 0; i < loop.pieces.size(); ++i)
-              {
-                const auto &piece = loop.pieces[i];
-                const int n       = piece.straight ? 1 : std::max(2, options.samples_per_piece);
-                std::vector<int> pts;
-                for (int j = 0; j <= n; ++j)
-                  {
-                    if (j == 0 && prev_end >= 0)
-                      {
-                        pts.push_back(prev_end);
-                        continue;
-                      }
-                    if (j == n && i + 1 == loop.pieces.size())
-                      {
-                        pts.push_back(loop_start);
-                        continue;
-                      }
-                    const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / n);
-                    pts.push_back(geo::addPoint(p.x(), p.y(), 0.0));
-                    if (i == 0 && j == 0)
-                      loop_start = pts.back();
-                  }
-                prev_end      = pts.back();
-                const int tag = piece.straight ? geo::addLine(pts[0], pts[1]) : geo::addSpline(pts);
-                curves.push_back(tag);
-                curve_to_piece[tag] = int(out.pieces.size());
-                piece_to_curve.push_back(tag);
-                out.pieces.push_back(piece);
-              }
-            loop_tags.push_back(geo::addCurveLoop(curves));
-          }
-        const int surface = geo::addPlaneSurface(loop_tags);
-        geo::synchronize();
-
-        // Physical groups: one per boundary id, plus the body.
-        std::map<unsigned int, std::vector<int>> groups;
-        for (const auto &[tag, piece] : curve_to_piece)
-          groups[out.pieces[piece].boundary_id].push_back(tag);
-        for (const auto &[id, tags] : groups)
-          {
-            gmsh::model::addPhysicalGroup(1, tags, int(id));
-            gmsh::model::setPhysicalName(1, int(id), boundary::name(id));
-          }
-        gmsh::model::addPhysicalGroup(2, {surface}, 1);
-        gmsh::model::setPhysicalName(2, 1, "body");
-
-        // Size field: for each distinct fine size, distance to its pieces and a threshold
-        // growing linearly (h + (g - 1) d, the continuous form of a geometric progression).
-        std::map<double, std::vector<double>> by_size;
-        for (const auto &[tag, piece] : curve_to_piece)
-          {
-            const double h = out.pieces[piece].size;
-            if (h > 0 && h < domain.h_body)
-              by_size[h].push_back(tag);
-          }
-        namespace field = gmsh::model::mesh::field;
-        std::vector<double> thresholds;
-        for (const auto &[h, tags] : by_size)
-          {
-            const int dist = field::add("Distance");
-            field::setNumbers(dist, "CurvesList", tags);
-            field::setNumber(dist, "NumPointsPerCurve", 400);
-            const int thr = field::add("Threshold");
-            field::setNumber(thr, "InField", dist);
-            field::setNumber(thr, "SizeMin", h);
-            field::setNumber(thr, "SizeMax", domain.h_body);
-            field::setNumber(thr, "DistMin", 0.5 * h);
-            field::setNumber(thr, "DistMax", 0.5 * h + (domain.h_body - h) / (domain.growth - 1.0));
-            thresholds.push_back(thr);
-          }
-        const int constant = field::add("MathEval");
-        field::setString(constant, "F", to_string_g(domain.h_body));
-        thresholds.push_back(constant);
-        const int fmin = field::add("Min");
-        field::setNumbers(fmin, "FieldsList", thresholds);
-        field::setAsBackgroundMesh(fmin);
-
-        // Node counts per curve from the arc length and the piece size, with an even
-        // number of edges per loop (added to the loop's longest curve): an odd boundary
-        // cannot be closed by quads only, and Blossom full-quad then leaves triangles.
-        {
-          std::size_t first = 0;
-          for (std::size_t l = 0; l < domain.loops.size(); ++l)
-            {
-              const std::size_t n_pieces = domain.loops[l].pieces.size();
-              std::vector<int> n_edges(n_pieces);
-              std::vector<double> lengths(n_pieces);
-              int total = 0;
-              for (std::size_t i = 0; i < n_pieces; ++i)
-                {
-                  const auto &piece = out.pieces[first + i];
-                  const double h = piece.size > 0 ? std::min(piece.size, domain.h_body) : domain.h_body;
-                  double length  = 0;
-                  const int ns   = 256;
-                  Vec2 prev      = piece.start();
-                  for (int j = 1; j <= ns; ++j)
-                    {
-                      const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / ns);
-                      length += (p - prev).norm();
-                      prev = p;
-                    }
-                  lengths[i] = length / h;
-                  n_edges[i] = std::max(1, int(std::lround(length / h)));
-                  total += n_edges[i];
-                }
-              if (total % 2 == 1)
-                ++n_edges[std::max_element(lengths.begin(), lengths.end()) - lengths.begin()];
-              for (std::size_t i = 0; i < n_pieces; ++i)
-                gmsh::model::mesh::setTransfiniteCurve(piece_to_curve[first + i], n_edges[i] + 1);
-              first += n_pieces;
-            }
-        }
-        gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps);
-        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-        gmsh::option::setNumber("Mesh.Algorithm", options.algorithm);
-        gmsh::option::setNumber("Mesh.RecombineAll", 1);
-        gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
-
-        gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-        gmsh::model::mesh::generate(2);
-        // Blossom recombination of a mesh with even boundary loops gives quads only; should
-        // a triangle remain, remesh at twice the size and split every element into quads
-        // (Mesh.SubdivisionAlgorithm = 1), which guarantees an all-quad mesh (lower quality).
-        auto n_non_quads = [&]() {
-          std::vector<int> t;
-          std::vector<std::vector<std::size_t>> et, en;
-          gmsh::model::mesh::getElements(t, et, en, 2, surface);
-          std::size_t n = 0;
-          for (std::size_t k = 0; k < t.size(); ++k)
-            if (t[k] != 3)
-              n += et[k].size();
-          return n;
-        };
-        // Blossom occasionally fails on a valid triangulation: retry Frontal-Delaunay with a
-        // perturbed triangulation (random factor), then MeshAdapt, before subdividing.
-        for (int attempt = 1; attempt <= 3 && n_non_quads() > 0; ++attempt)
-          {
-            gmsh::model::mesh::clear();
-            gmsh::option::setNumber("Mesh.RandomFactor", 1e-9 * (1 + 10 * attempt));
-            gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps + attempt);
-            gmsh::model::mesh::generate(2);
-          }
-        if (n_non_quads() > 0 && options.algorithm != 1)
-          {
-            gmsh::model::mesh::clear();
-            gmsh::option::setNumber("Mesh.Algorithm", 1);
-            gmsh::model::mesh::generate(2);
-          }
-        if (n_non_quads() > 0)
-          {
-            gmsh::model::mesh::clear();
-            gmsh::option::setNumber("Mesh.MeshSizeFactor", 2.0);
-            gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
-            gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
-            gmsh::model::mesh::generate(2);
-            out.subdivided = true;
-          }
-
-        // Nodes.
-        std::vector<std::size_t> node_tags;
-        std::vector<double> coords, param;
-        gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, true, false);
-        std::map<std::size_t, unsigned int> index;
-        for (std::size_t i = 0; i < node_tags.size(); ++i)
-          if (index.emplace(node_tags[i], unsigned(out.vertices.size())).second)
-            out.vertices.emplace_back(coords[3 * i], coords[3 * i + 1]);
-
-        // Quads.
-        std::vector<int> types;
-        std::vector<std::vector<std::size_t>> elem_tags, elem_nodes;
-        gmsh::model::mesh::getElements(types, elem_tags, elem_nodes, 2, surface);
-        for (std::size_t k = 0; k < types.size(); ++k)
-          {
-            if (types[k] != 3)
-              gmsh_failure("left " + std::to_string(elem_tags[k].size()) +
-                             " non-quadrilateral elements (type " + std::to_string(types[k]) + ")",
-                           "recombination failed; change the mesh sizes");
-            for (std::size_t e = 0; e < elem_tags[k].size(); ++e)
-              {
-                std::array<unsigned int, 4> q;
-                for (int j = 0; j < 4; ++j)
-                  q[j] = index.at(elem_nodes[k][4 * e + j]);
-                // gmsh order is cyclic; make it counter-clockwise, then lexicographic.
-                const Vec2 &a = out.vertices[q[0]], &b = out.vertices[q[1]], &c = out.vertices[q[2]],
-                           &d  = out.vertices[q[3]];
-                const double area2 = (c - a).x() * (d - b).y() - (c - a).y() * (d - b).x();
-                if (area2 < 0)
-                  std::swap(q[1], q[3]);
-                out.cells.push_back({q[0], q[1], q[3], q[2]});
-              }
-          }
-        if (out.cells.empty())
-          gmsh_failure("produced no elements", "");
-
-        // Boundary edges per curve.
-        for (const auto &[tag, piece] : curve_to_piece)
-          {
-            gmsh::model::mesh::getElements(types, elem_tags, elem_nodes, 1, tag);
-            for (std::size_t k = 0; k < types.size(); ++k)
-              for (std::size_t e = 0; e < elem_tags[k].size(); ++e)
-                out.boundary_edges.push_back({index.at(elem_nodes[k][2 * e]),
-                                              index.at(elem_nodes[k][2 * e + 1]),
-                                              out.pieces[piece].boundary_id, piece});
-          }
-
+        const GmshModel model = build_geometry(domain, options, out);
+        add_physical_groups(model, out);
+        add_size_field(domain, model, out);
+        set_curve_node_counts(domain, model, out);
+        generate_all_quad(options, model, out);
+        extract_mesh(model, out);
         if (!options.msh_file.empty())
-          {
-            const auto &target = options.msh_file;
-            auto tmp           = target.parent_path() /
-                       ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + ".msh");
-            gmsh::write(tmp.string());
-            std::filesystem::rename(tmp, target);
-          }
+          write_msh(options.msh_file);
       }
     catch (const std::string &e)
       {
@@ -411,28 +480,7 @@ namespace gearfem::mesh
       {
         gmsh_failure("returned inconsistent node tags", "");
       }
-
-    // Snap boundary vertices onto the exact curves (gmsh meshed a spline through samples).
-    std::vector<int> on_piece(out.vertices.size(), -1);
-    std::vector<char> corner(out.vertices.size(), 0);
-    for (const auto &e : out.boundary_edges)
-      for (unsigned v : {e.v0, e.v1})
-        {
-          if (on_piece[v] >= 0 && on_piece[v] != e.piece)
-            corner[v] = 1;
-          on_piece[v] = e.piece;
-        }
-    for (std::size_t v = 0; v < out.vertices.size(); ++v)
-      {
-        if (on_piece[v] < 0)
-          continue;
-        const auto &piece = out.pieces[on_piece[v]];
-        Vec2 &x           = out.vertices[v];
-        if (corner[v])
-          x = (x - piece.start()).norm() < (x - piece.end()).norm() ? piece.start() : piece.end();
-        else if (!piece.straight)
-          x = piece.curve.point(piece.curve.closest_parameter(x, piece.t0, piece.t1));
-      }
+    snap_boundary_vertices(out);
     out.mesh_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 
