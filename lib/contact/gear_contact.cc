@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <optional>
 
 namespace gearfem::contact
 {
@@ -55,8 +56,57 @@ namespace gearfem::contact
     return phi;
   }
 
-  GearContactModel::GearContactModel(const geometry::GearPair &pair,
-                                     const mesh::GearMeshParameters mp[2],
+  GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mp,
+                           const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
+  {
+    using Optional = std::optional<Scope>;
+    const auto &tooth = pair.gear(i);
+    mesh::MeshData m;
+    {
+      Optional scope;
+      if (timer)
+        scope.emplace(*timer, "mesh");
+      m = mesh::mesh_gear(tooth, mp);
+    }
+    Optional scope;
+    if (timer)
+      scope.emplace(*timer, "assemble and factorise");
+    fem::FeOptions fo = fe;
+    fo.refinements    = fe.refinements + mp.refinements;
+    // The contact solver needs selected entries of K^-1 on the surface: MUMPS computes
+    // them with a pruned elimination tree, UMFPACK only with a full solve per column
+    // (10x slower on a 3-tooth sector), so `automatic` means MUMPS here.
+    if (fo.solver == fem::SolverKind::automatic)
+      fo.solver = fem::SolverKind::mumps;
+    GearBody g;
+    g.body = std::make_unique<fem::ElasticBody>(m, material, fo);
+    g.body->constrain(mesh::boundary::bore);
+    if (mp.model == mesh::GearMeshParameters::Model::sector)
+      {
+        g.body->constrain(mesh::boundary::cut_cw);
+        g.body->constrain(mesh::boundary::cut_ccw);
+      }
+    g.body->assemble_and_factorize();
+    g.fine_teeth = mesh::fine_teeth(mp, tooth.teeth());
+    if (mp.model == mesh::GearMeshParameters::Model::sector && mp.sector_teeth < 3)
+      throw InputError("Mesh/Sector teeth", std::to_string(mp.sector_teeth),
+                       ">= 3 for contact (teeth -1, 0, 1 share the mesh cycle)");
+    const double m_n = tooth.parameters().rack.module;
+    g.contact_size   = mesh::contact_size(mp, m_n) / std::pow(2.0, fo_refinements(fe, mp));
+    return g;
+  }
+
+  GearContactModel::GearContactModel(const geometry::GearPair &pair, std::array<GearBody, 2> bodies,
+                                     const ContactOptions &options)
+    : pair_(&pair)
+    , options_(options)
+    , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
+  {
+    options_.validate();
+    set_up_contact(std::move(bodies));
+  }
+
+  GearContactModel::GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mp[2],
                                      const fem::Elasticity material[2], const fem::FeOptions &fe,
                                      const ContactOptions &options)
     : pair_(&pair)
@@ -64,38 +114,25 @@ namespace gearfem::contact
     , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
     options_.validate();
+    std::array<GearBody, 2> bodies;
+    for (int i = 0; i < 2; ++i)
+      bodies[i] = build_gear_body(pair, i + 1, mp[i], material[i], fe, &timer_);
+    set_up_contact(std::move(bodies));
+  }
+
+  void GearContactModel::set_up_contact(std::array<GearBody, 2> bodies)
+  {
+    Scope scope(timer_, "contact surfaces");
     for (int i = 0; i < 2; ++i)
       {
-        const auto &tooth = pair.gear(i + 1);
-        mesh::MeshData m;
-        {
-          Scope scope(timer_, "mesh");
-          m = mesh::mesh_gear(tooth, mp[i]);
-        }
-        Scope scope(timer_, "assemble and factorise");
-        fem::FeOptions fo = fe;
-        fo.refinements    = fe.refinements + mp[i].refinements;
-        // The contact solver needs selected entries of K^-1 on the surface: MUMPS computes
-        // them with a pruned elimination tree, UMFPACK only with a full solve per column
-        // (10x slower on a 3-tooth sector), so `automatic` means MUMPS here.
-        if (fo.solver == fem::SolverKind::automatic)
-          fo.solver = fem::SolverKind::mumps;
-        bodies_[i]        = std::make_unique<fem::ElasticBody>(m, material[i], fo);
-        bodies_[i]->constrain(mesh::boundary::bore);
-        if (mp[i].model == mesh::GearMeshParameters::Model::sector)
-          {
-            bodies_[i]->constrain(mesh::boundary::cut_cw);
-            bodies_[i]->constrain(mesh::boundary::cut_ccw);
-          }
-        bodies_[i]->assemble_and_factorize();
-        fine_[i] = mesh::fine_teeth(mp[i], tooth.teeth());
-        if (mp[i].model == mesh::GearMeshParameters::Model::sector && mp[i].sector_teeth < 3)
-          throw InputError("Mesh/Sector teeth", std::to_string(mp[i].sector_teeth),
-                           ">= 3 for contact (teeth -1, 0, 1 share the mesh cycle)");
+        if (!bodies[i].body)
+          throw InputError("gear body " + std::to_string(i + 1), "(none)", "a factorised body (build_gear_body)");
+        bodies_[i] = std::move(bodies[i].body);
+        fine_[i]   = std::move(bodies[i].fine_teeth);
+        h_reach_   = std::max(h_reach_, bodies[i].contact_size);
       }
     // Either body may be the master of a tooth pair, so both surfaces carry the drive
     // fillets (a tip corner pressing into the mate's fillet); fillet nodes are never slaves.
-    Scope scope(timer_, "contact surfaces");
     namespace bd = mesh::boundary;
     for (int i = 0; i < 2; ++i)
       {
@@ -106,12 +143,10 @@ namespace gearfem::contact
             const auto code = bd::code_of(nd.boundary_id);
             slave_capable_[i].push_back(code == bd::flank_drive || code == bd::tip || code == bd::tip_round_drive);
           }
-        const double m_n = pair.gear(i + 1).parameters().rack.module;
-        const double h   = mesh::contact_size(mp[i], m_n) / std::pow(2.0, fo_refinements(fe, mp[i]));
-        h_reach_       = std::max(h_reach_, h);
       }
     // Tooth of each gear at C when phi1 = 0, and the sense of each body's rotation.
-    const Vec2 C = pair.point("C").position;
+    const auto &pair = *pair_;
+    const Vec2 C     = pair.point("C").position;
     for (int i = 1; i <= 2; ++i)
       {
         const auto P  = pair.placement(i, 0.0);

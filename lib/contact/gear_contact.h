@@ -38,14 +38,33 @@ namespace gearfem::contact
     double rotation() const { return solution.q; } ///< delta_theta [rad]
   };
 
+  /// One gear of a pair, ready for contact: its factorised elastic body (bore clamped;
+  /// sector cut edges clamped), the fine teeth that carry contact surfaces, and the contact
+  /// element size of its flanks.
+  struct GearBody
+  {
+    std::unique_ptr<fem::ElasticBody> body;
+    std::vector<int> fine_teeth; ///< body-frame tooth indices
+    double contact_size = 0;     ///< element size on the drive flanks after refinement [m]
+  };
+
+  /// Mesh gear i (1 or 2) of `pair`, build, constrain, assemble and factorise its body.
+  /// With a timer, the phases are its sections "mesh" and "assemble and factorise".
+  GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mesh,
+                           const fem::Elasticity &material, const fem::FeOptions &fe,
+                           dealii::TimerOutput *timer = nullptr);
+
   /// The bodies and solver of one pair.
   class GearContactModel
   {
   public:
-    /// Mesh both gears (mesh parameters per gear), build and factorise the bodies (bore
-    /// clamped; sector cut edges clamped), and the contact surfaces: drive flank, tip
-    /// rounding and tip of the fine teeth (slave side), plus the drive fillet (master
-    /// side, for tip-to-fillet corner contact under heavy load).
+    /// The contact model of two prepared gear bodies (build_gear_body): the contact
+    /// surfaces (drive flank, tip rounding and tip of the fine teeth on the slave side, plus
+    /// the drive fillet on the master side, for tip-to-fillet corner contact under heavy
+    /// load) and the two-body solver.
+    GearContactModel(const geometry::GearPair &pair, std::array<GearBody, 2> bodies,
+                     const ContactOptions &options);
+    /// Build both bodies (mesh parameters per gear) in this model's timer, then as above.
     GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mesh[2],
                      const fem::Elasticity material[2], const fem::FeOptions &fe,
                      const ContactOptions &options);
@@ -89,6 +108,9 @@ namespace gearfem::contact
     int zone_slave(double psi, double normal_force) const;
 
   private:
+    /// Contact surfaces, tooth bookkeeping and solver on the bodies (timer section
+    /// "contact surfaces").
+    void set_up_contact(std::array<GearBody, 2> bodies);
     /// The contact solve of one position (scene and solve) in timer section "contact".
     /// `normal_force` [N] sizes the corner reach of the scene.
     ContactState timed_solve(double phi1, double normal_force, Control control, double value,
