@@ -13,8 +13,8 @@
 #  include "dynamics/benchmark.h"
 #  define GEARFEM_BENCH_DYNAMICS 1
 #endif
-#if __has_include("contact/benchmark.h")
-#  include "contact/benchmark.h"
+#if __has_include("post/benchmark.h")
+#  include "post/benchmark.h"
 #  define GEARFEM_BENCH_SOLVE
 #endif
 #if __has_include("fem/benchmark.h")
@@ -79,7 +79,7 @@ namespace gearfem::commands
             throw InputError("bench solve input file", "(none)", "a .prm file",
                              "usage: gearfem bench solve inputs/demo.prm");
           if (!ctx.validate_only)
-            contact::benchmark(ctx.input_file, *ctx.out);
+            post::benchmark(ctx.input_file, *ctx.out);
           return;
         }
 #endif

@@ -7,6 +7,7 @@
 #include "commands/command.h"
 #include "contact/parameters.h"
 #include "io/journal.h"
+#include "post/parameters.h"
 #include "post/solve_run.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -19,12 +20,17 @@ namespace gearfem::commands
 {
   namespace
   {
-    void declare(dealii::ParameterHandler &prm) { contact::declare_gear_contact_input(prm); }
+    void declare(dealii::ParameterHandler &prm)
+    {
+      contact::declare_gear_contact_input(prm);
+      post::declare_post_parameters(prm);
+    }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
       std::ostream &out = *ctx.out;
       const contact::GearContactInput in = contact::parse_gear_contact_input(prm);
+      const post::PostOptions post_options = post::parse_post_parameters(prm);
       const auto &pair = *in.pair;
       out << "solve: z " << pair.gear(1).teeth() << "/" << pair.gear(2).teeth() << ", a "
           << pair.center_distance() * 1e3 << " mm, contact ratio " << pair.contact_ratio() << ", "
@@ -50,6 +56,7 @@ namespace gearfem::commands
       opt.input_hash = io::content_hash(content.str());
       opt.resume     = ctx.resume;
       opt.out        = &out;
+      opt.post       = post_options;
       const post::SolveRunResult r = post::run_solve(*model, in, opt);
       if (in.solve.plots && r.results.sweep.n_rows() > 0)
         run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
@@ -57,14 +64,18 @@ namespace gearfem::commands
         throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
                           " completed positions are saved in " + ctx.output_dir.string() +
                           " (their journal stays: with the input unchanged, --resume retries from the failed position)");
-      out << "\n" << post::summary_table(r, pair, in.solve.torques);
+      out << "\n" << post::summary_table(r, pair, in.solve.torques) << "time: contact "
+          << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
+          << r.seconds.at("output") << " s\n";
       int n_unresolved = 0;
       for (const auto &[T, n] : r.unresolved)
         n_unresolved += n;
       if (n_unresolved > 0)
         out << "warning: " << n_unresolved
             << " loaded tooth-pair positions (each loaded pair at each position, all torques) have fewer "
-               "than 5 contact nodes across the patch: their peak pressure is unresolved (refine "
+               "than "
+            << post_options.min_patch_nodes
+            << " contact nodes across the patch (Post/Min patch nodes): their peak pressure is unresolved (refine "
                "Mesh/h_contact; column \"resolved\" of pairs.csv); STE, stiffness and root "
                "stress are not affected\n";
     }

@@ -1,24 +1,20 @@
-// GearContactModel: the two gear bodies, per-position contact solves and post-processing.
+// GearContactModel: the two gear bodies and the per-position contact solves.
 #include "contact/gear_contact.h"
 
 #include "base/errors.h"
 #include "contact/hertz.h"
-#include "fem/output.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <iostream>
 #include <map>
+#include <optional>
 
 namespace gearfem::contact
 {
   namespace
   {
-    using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
+    using Scope = dealii::TimerOutput::Scope;
     const double pi = 3.14159265358979323846;
 
     std::set<unsigned int> surface_ids(const std::vector<int> &teeth, bool master)
@@ -41,6 +37,13 @@ namespace gearfem::contact
     }
   } // namespace
 
+  double section_seconds(const dealii::TimerOutput &timer, const std::string &name)
+  {
+    const auto times = timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+    const auto it    = times.find(name);
+    return it == times.end() ? 0.0 : it->second;
+  }
+
   std::vector<double> cycle_positions(const geometry::GearPair &pair, int n, double pitches, double start)
   {
     if (n < 1)
@@ -53,40 +56,80 @@ namespace gearfem::contact
     return phi;
   }
 
-  GearContactModel::GearContactModel(const geometry::GearPair &pair,
-                                     const mesh::GearMeshParameters mp[2],
+  GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mp,
+                           const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
+  {
+    using Optional = std::optional<Scope>;
+    const auto &tooth = pair.gear(i);
+    mesh::MeshData m;
+    {
+      Optional scope;
+      if (timer)
+        scope.emplace(*timer, "mesh");
+      m = mesh::mesh_gear(tooth, mp);
+    }
+    Optional scope;
+    if (timer)
+      scope.emplace(*timer, "assemble and factorise");
+    fem::FeOptions fo = fe;
+    fo.refinements    = fe.refinements + mp.refinements;
+    // The contact solver needs selected entries of K^-1 on the surface: MUMPS computes
+    // them with a pruned elimination tree, UMFPACK only with a full solve per column
+    // (10x slower on a 3-tooth sector), so `automatic` means MUMPS here.
+    if (fo.solver == fem::SolverKind::automatic)
+      fo.solver = fem::SolverKind::mumps;
+    GearBody g;
+    g.body = std::make_unique<fem::ElasticBody>(m, material, fo);
+    g.body->constrain(mesh::boundary::bore);
+    if (mp.model == mesh::GearMeshParameters::Model::sector)
+      {
+        g.body->constrain(mesh::boundary::cut_cw);
+        g.body->constrain(mesh::boundary::cut_ccw);
+      }
+    g.body->assemble_and_factorize();
+    g.fine_teeth = mesh::fine_teeth(mp, tooth.teeth());
+    if (mp.model == mesh::GearMeshParameters::Model::sector && mp.sector_teeth < 3)
+      throw InputError("Mesh/Sector teeth", std::to_string(mp.sector_teeth),
+                       ">= 3 for contact (teeth -1, 0, 1 share the mesh cycle)");
+    const double m_n = tooth.parameters().rack.module;
+    g.contact_size   = mesh::contact_size(mp, m_n) / std::pow(2.0, fo_refinements(fe, mp));
+    return g;
+  }
+
+  GearContactModel::GearContactModel(const geometry::GearPair &pair, std::array<GearBody, 2> bodies,
+                                     const ContactOptions &options)
+    : pair_(&pair)
+    , options_(options)
+    , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
+  {
+    options_.validate();
+    set_up_contact(std::move(bodies));
+  }
+
+  GearContactModel::GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mp[2],
                                      const fem::Elasticity material[2], const fem::FeOptions &fe,
                                      const ContactOptions &options)
     : pair_(&pair)
     , options_(options)
+    , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
     options_.validate();
-    const auto t0 = Clock::now();
+    std::array<GearBody, 2> bodies;
+    for (int i = 0; i < 2; ++i)
+      bodies[i] = build_gear_body(pair, i + 1, mp[i], material[i], fe, &timer_);
+    set_up_contact(std::move(bodies));
+  }
+
+  void GearContactModel::set_up_contact(std::array<GearBody, 2> bodies)
+  {
+    Scope scope(timer_, "contact surfaces");
     for (int i = 0; i < 2; ++i)
       {
-        const auto &tooth = pair.gear(i + 1);
-        auto t1           = Clock::now();
-        const auto m      = mesh::mesh_gear(tooth, mp[i]);
-        t_mesh_ += since(t1);
-        fem::FeOptions fo = fe;
-        fo.refinements    = fe.refinements + mp[i].refinements;
-        // The contact solver needs selected entries of K^-1 on the surface: MUMPS computes
-        // them with a pruned elimination tree, UMFPACK only with a full solve per column
-        // (10x slower on a 3-tooth sector), so `automatic` means MUMPS here.
-        if (fo.solver == fem::SolverKind::automatic)
-          fo.solver = fem::SolverKind::mumps;
-        bodies_[i]        = std::make_unique<fem::ElasticBody>(m, material[i], fo);
-        bodies_[i]->constrain(mesh::boundary::bore);
-        if (mp[i].model == mesh::GearMeshParameters::Model::sector)
-          {
-            bodies_[i]->constrain(mesh::boundary::cut_cw);
-            bodies_[i]->constrain(mesh::boundary::cut_ccw);
-          }
-        bodies_[i]->assemble_and_factorize();
-        fine_[i] = mesh::fine_teeth(mp[i], tooth.teeth());
-        if (mp[i].model == mesh::GearMeshParameters::Model::sector && mp[i].sector_teeth < 3)
-          throw InputError("Mesh/Sector teeth", std::to_string(mp[i].sector_teeth),
-                           ">= 3 for contact (teeth -1, 0, 1 share the mesh cycle)");
+        if (!bodies[i].body)
+          throw InputError("gear body " + std::to_string(i + 1), "(none)", "a factorised body (build_gear_body)");
+        bodies_[i] = std::move(bodies[i].body);
+        fine_[i]   = std::move(bodies[i].fine_teeth);
+        h_reach_   = std::max(h_reach_, bodies[i].contact_size);
       }
     // Either body may be the master of a tooth pair, so both surfaces carry the drive
     // fillets (a tip corner pressing into the mate's fillet); fillet nodes are never slaves.
@@ -100,12 +143,10 @@ namespace gearfem::contact
             const auto code = bd::code_of(nd.boundary_id);
             slave_capable_[i].push_back(code == bd::flank_drive || code == bd::tip || code == bd::tip_round_drive);
           }
-        const double m_n = pair.gear(i + 1).parameters().rack.module;
-        const double h   = mesh::contact_size(mp[i], m_n) / std::pow(2.0, fo_refinements(fe, mp[i]));
-        h_reach_       = std::max(h_reach_, h);
       }
     // Tooth of each gear at C when phi1 = 0, and the sense of each body's rotation.
-    const Vec2 C = pair.point("C").position;
+    const auto &pair = *pair_;
+    const Vec2 C     = pair.point("C").position;
     for (int i = 1; i <= 2; ++i)
       {
         const auto P  = pair.placement(i, 0.0);
@@ -119,44 +160,63 @@ namespace gearfem::contact
     Drive drive;
     drive.kind = Drive::Kind::rotation;
     solver_    = std::make_unique<TwoBodyContact>(*surfaces_[0], *surfaces_[1], options_, drive);
-    t_setup_   = since(t0);
   }
 
   GearContactModel::~GearContactModel() = default;
 
-  PositionResult GearContactModel::solve(double phi1, double torque, const PositionResult *warm, bool keep)
+  double GearContactModel::mesh_seconds() const { return section_seconds(timer_, "mesh"); }
+
+  double GearContactModel::setup_seconds() const
+  {
+    return mesh_seconds() + section_seconds(timer_, "assemble and factorise") +
+           section_seconds(timer_, "contact surfaces");
+  }
+
+  ContactState GearContactModel::timed_solve(double phi1, double normal_force, Control control, double value,
+                                             const ContactSolution *warm)
+  {
+    const double before = section_seconds(timer_, "contact");
+    ContactState state;
+    state.phi1 = phi1;
+    {
+      Scope scope(timer_, "contact");
+      state.solution = solver_->solve(scene(phi1, normal_force), control, value, warm);
+    }
+    state.torque    = control == Control::load ? value : state.solution.load;
+    state.t_contact = section_seconds(timer_, "contact") - before;
+    return state;
+  }
+
+  ContactState GearContactModel::solve(double phi1, double torque, const ContactSolution *warm)
   {
     require_greater("Solve/Torques", torque, 0.0, "N m");
-    const auto t0 = Clock::now();
-    const Scene sc = scene(phi1, torque / pair_->base_radius(1));
-    ContactSolution s;
     try
       {
-        s = solver_->solve(sc, Control::load, torque, warm ? &warm->solution : nullptr);
+        return timed_solve(phi1, torque / pair_->base_radius(1), Control::load, torque, warm);
       }
     catch (const SolverError &e)
       {
         throw SolverError("position phi1 = " + to_string_g(phi1 * 180 / pi) + " deg, torque " +
                           to_string_g(torque) + " N m: " + e.what());
       }
-    auto r    = finish(phi1, torque, std::move(s), keep);
-    r.t_total = since(t0);
-    return r;
   }
 
-  PositionResult GearContactModel::solve_rotation(double phi1, double dtheta, const PositionResult *warm, bool keep)
+  ContactState GearContactModel::solve_rotation(double phi1, double dtheta, const ContactSolution *warm)
   {
     if (!(dtheta >= 0))
       throw InputError("Solve/Rotation", to_string_g(dtheta), ">= 0 rad");
-    const auto t0 = Clock::now();
     // Patch size for the corner reach: the load of a typical steel mesh stiffness
     // (ISO 6336-1 c' = 14 N/(mm um)) at this rotation.
     const double b = std::min(bodies_[0]->material().thickness, bodies_[1]->material().thickness);
-    const Scene sc = scene(phi1, 14e9 * b * dtheta * pair_->base_radius(1));
-    ContactSolution s = solver_->solve(sc, Control::displacement, dtheta, warm ? &warm->solution : nullptr);
-    auto r    = finish(phi1, s.load, std::move(s), keep);
-    r.t_total = since(t0);
-    return r;
+    return timed_solve(phi1, 14e9 * b * dtheta * pair_->base_radius(1), Control::displacement, dtheta, warm);
+  }
+
+  std::array<geometry::Placement, 2> GearContactModel::placements(double phi1, double rotation) const
+  {
+    Scene rigid;
+    rigid.placement[0] = pair_->placement(1, phi1);
+    rigid.placement[1] = pair_->placement(2, phi1);
+    return {solver_->placed(rigid, 1, rotation), rigid.placement[1]};
   }
 
   double GearContactModel::tooth_roll(int body, int tooth, double phi1) const
@@ -226,171 +286,4 @@ namespace gearfem::contact
     return sc;
   }
 
-  bool GearContactModel::at_tip_edge(const ContactPoint &p, const geometry::Placement &P1,
-                                     const geometry::Placement &P2) const
-  {
-    namespace bd = mesh::boundary;
-    const auto tip_code = [](unsigned int c) { return c == bd::tip || c == bd::tip_round_drive; };
-    if (tip_code(p.slave_code) || tip_code(p.master_code) || p.master_corner)
-      return true;
-    // A node at the end of a flank (the sharp corner itself, or the start of a tip
-    // rounding) lies on the tip-form circle; test both the slave node and the master point.
-    const geometry::Placement *P[2] = {&P1, &P2};
-    const int S = p.slave_body, M = 3 - S;
-    const double rs = (p.x - P[S - 1]->centre).norm(), rm = (p.master_point - P[M - 1]->centre).norm();
-    const double tol = 1e-9 * pair_->gear(1).parameters().rack.module;
-    return rs >= pair_->gear(S).radii().tip_form - tol || rm >= pair_->gear(M).radii().tip_form - tol;
-  }
-
-  void GearContactModel::pressure_and_hertz(ToothPairResult &tp, const ContactSolution &sol,
-                                            const geometry::Placement &P1, const geometry::Placement &P2) const
-  {
-    // Pressure profile along the flank of this pair (its slave nodes, pair frame).
-    const ContactPoint *peak = nullptr;
-    for (const auto &p : sol.points)
-      if (p.tooth(1) == tp.pinion_tooth && (!peak || p.pressure > peak->pressure))
-        peak = &p;
-    if (!peak)
-      return;
-    tp.p_max = peak->pressure;
-    const Vec2 tau(-peak->normal.y(), peak->normal.x());
-    std::vector<std::pair<double, double>> sp;
-    for (const auto &p : sol.points)
-      {
-        if (p.tooth(1) != tp.pinion_tooth || !(p.pressure > 0))
-          continue;
-        // s along the pinion flank, increasing towards the pinion tip whichever body is slave.
-        // (the normal is the master's: flip it when the gear is the slave)
-        const double s_along = (p.x - peak->x).dot(tau) * (peak->slave_body == 1 ? 1.0 : -1.0);
-        tp.profile.push_back({s_along, (p.x - P1.centre).norm(), p.pressure});
-        sp.emplace_back(s_along, p.pressure);
-      }
-    std::sort(tp.profile.begin(), tp.profile.end(), [](const auto &a, const auto &b) { return a[0] < b[0]; });
-    const auto fit = fit_ellipse(sp);
-    tp.resolved    = tp.active_nodes >= min_patch_nodes && fit[0] > 0;
-    tp.half_width  = tp.resolved ? fit[0] : 0.0;
-    // Hertz on the local involute radii of curvature at the peak.
-    const double rb1 = pair_->base_radius(1), rb2 = pair_->base_radius(2);
-    tp.radius_pinion  = (peak->x - P1.centre).norm();
-    tp.radius_gear    = (peak->x - P2.centre).norm();
-    const double rho1 = tp.radius_pinion > rb1 ? std::sqrt(tp.radius_pinion * tp.radius_pinion - rb1 * rb1) : 0;
-    const double rho2 = tp.radius_gear > rb2 ? std::sqrt(tp.radius_gear * tp.radius_gear - rb2 * rb2) : 0;
-    if (rho1 > 0 && rho2 > 0)
-      {
-        const auto &mat1 = bodies_[0]->material(), &mat2 = bodies_[1]->material();
-        HertzCase hc;
-        hc.R1 = rho1, hc.R2 = rho2;
-        hc.E1 = mat1.youngs_modulus, hc.E2 = mat2.youngs_modulus;
-        hc.nu1 = mat1.poisson_ratio, hc.nu2 = mat2.poisson_ratio;
-        hc.thickness = std::min(mat1.thickness, mat2.thickness);
-        hc.force     = tp.force;
-        hc.model     = mat1.model;
-        std::tie(tp.a_hertz, tp.p_hertz) = hertz_closed_form(hc);
-      }
-  }
-
-  PositionResult GearContactModel::finish(double phi1, double torque, ContactSolution &&s, bool keep)
-  {
-    PositionResult r;
-    r.phi1 = phi1, r.torque = torque;
-    r.solution      = std::move(s);
-    const auto &sol = r.solution;
-    const double rb1 = pair_->base_radius(1);
-    r.rotation     = sol.q;
-    r.ste          = sol.q * rb1;
-    r.normal_force = sol.load / rb1;
-    r.k_secant     = r.ste > 0 ? r.normal_force / r.ste : 0.0;
-    r.k_tangent    = sol.tangent / (rb1 * rb1);
-    r.t_search = sol.t_search, r.t_compliance = sol.t_compliance, r.t_solve = sol.t_solve;
-    const auto t0 = Clock::now();
-
-    // Full displacement fields and equilibrium checks.
-    fem::ElasticBody &b1 = *bodies_[0], &b2 = *bodies_[1];
-    dealii::Vector<double> f[2] = {dealii::Vector<double>(b1.n_dofs()), dealii::Vector<double>(b2.n_dofs())};
-    for (int b = 0; b < 2; ++b)
-      for (const auto &[d, v] : sol.forces[b])
-        f[b][d] += v;
-    dealii::Vector<double> u[2] = {b1.solve(f[0]), b2.solve(f[1])};
-    r.torque_contact  = -b1.moment(f[0]);
-    r.torque_reaction = b1.moment(b1.reactions(u[0], f[0]));
-    r.torque_gear     = std::abs(b2.moment(f[1]));
-
-    // Load sharing by pinion tooth.
-    std::map<int, ToothPairResult> pairs;
-    Scene rigid;
-    rigid.placement[0] = pair_->placement(1, phi1);
-    rigid.placement[1] = pair_->placement(2, phi1);
-    const geometry::Placement P1 = solver_->placed(rigid, 1, sol.q), P2 = rigid.placement[1];
-    double total = 0;
-    for (const auto &p : sol.points)
-      {
-        if (!(p.force > 0))
-          continue;
-        auto &tp        = pairs[p.tooth(1)];
-        tp.pinion_tooth = p.tooth(1), tp.gear_tooth = p.tooth(2);
-        tp.slave_body   = p.slave_body;
-        tp.force += p.force;
-        total += p.force;
-        ++tp.active_nodes;
-        tp.edge = tp.edge || at_tip_edge(p, P1, P2);
-      }
-    for (auto &[k, tp] : pairs)
-      {
-        tp.share = total > 0 ? tp.force / total : 0.0;
-        pressure_and_hertz(tp, sol, P1, P2);
-        // Root stress: tension-side (drive) fillet of the loaded teeth.
-        const int zp = pair_->gear(1).teeth(), zg = pair_->gear(2).teeth();
-        const int kp = ((tp.pinion_tooth % zp) + zp) % zp, kg = ((tp.gear_tooth % zg) + zg) % zg;
-        const auto pk1 = b1.peak_principal_stress(u[0], mesh::boundary::tooth_id(kp, mesh::boundary::fillet_drive));
-        const auto pk2 = b2.peak_principal_stress(u[1], mesh::boundary::tooth_id(kg, mesh::boundary::fillet_drive));
-        tp.root_stress_pinion = pk1.value, tp.root_radius_pinion = pk1.radius;
-        tp.root_stress_gear = pk2.value, tp.root_radius_gear = pk2.radius;
-        r.max_root_stress_pinion = std::max(r.max_root_stress_pinion, pk1.value);
-        r.max_root_stress_gear   = std::max(r.max_root_stress_gear, pk2.value);
-        (tp.edge ? r.p_max_edge : r.p_max) = std::max(tp.edge ? r.p_max_edge : r.p_max, tp.p_max);
-      }
-    for (auto &[k, tp] : pairs)
-      {
-        if (tp.share > 1e-6)
-          ++r.n_pairs;
-        r.pairs.push_back(std::move(tp));
-      }
-    if (keep)
-      r.u[0] = std::move(u[0]), r.u[1] = std::move(u[1]);
-    r.t_post = since(t0);
-    return r;
-  }
-
-  void GearContactModel::write_vtu(const PositionResult &r, const std::filesystem::path &file, double scale) const
-  {
-    if (r.u[0].size() == 0)
-      throw SolverError("write_vtu: the position was solved without keeping displacements");
-    Scene rigid;
-    rigid.placement[0] = pair_->placement(1, r.phi1);
-    rigid.placement[1] = pair_->placement(2, r.phi1);
-    const geometry::Placement P[2] = {solver_->placed(rigid, 1, r.rotation), rigid.placement[1]};
-    // Contact traction p n at the slave nodes of each body, in its body frame.
-    dealii::Vector<double> traction[2] = {dealii::Vector<double>(bodies_[0]->n_dofs()),
-                                          dealii::Vector<double>(bodies_[1]->n_dofs())};
-    for (const auto &p : r.solution.points)
-      {
-        const int S    = p.slave_body;
-        const auto &nd = surfaces_[S - 1]->nodes()[p.node];
-        const double c = std::cos(-P[S - 1].angle), s = std::sin(-P[S - 1].angle);
-        const Vec2 n(c * p.normal.x() - s * p.normal.y(), s * p.normal.x() + c * p.normal.y());
-        traction[S - 1][nd.dof_x] = p.pressure * n.x();
-        traction[S - 1][nd.dof_y] = p.pressure * n.y();
-      }
-    std::vector<fem::PlacedBody> pb(2);
-    for (int i = 0; i < 2; ++i)
-      {
-        pb[i].body      = bodies_[i].get();
-        pb[i].u         = &r.u[i];
-        pb[i].traction  = &traction[i];
-        pb[i].angle     = P[i].angle;
-        pb[i].centre[0] = P[i].centre.x();
-        pb[i].centre[1] = P[i].centre.y();
-      }
-    fem::write_placed_vtu(pb, file, scale);
-  }
 } // namespace gearfem::contact

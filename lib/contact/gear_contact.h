@@ -4,99 +4,94 @@
 // placed at roll angle phi1 and gear 2 at its unloaded conjugate angle (geometry module),
 // gear 2's bore is clamped and the pinion turns rigidly by delta_theta about its centre
 // (kinematic rotation, never a large displacement). Torque targeting solves for
-// delta_theta. Results per position: STE, secant and tangent mesh stiffness, load sharing,
-// contact pressure, root stress, and equilibrium checks. SI units inside.
+// delta_theta. The model does contact only: it returns the converged contact state of each
+// position (ContactState); lib/post evaluates it (STE, stiffness, load sharing, pressure,
+// root stress, VTU). SI units inside. Phases are timed with deal.II TimerOutput sections
+// "mesh", "assemble and factorise", "contact surfaces" (set-up) and "contact" (per position).
 #include "contact/two_body.h"
 #include "fem/elastic_body.h"
 #include "geometry/pair.h"
 #include "mesh/gear_mesh.h"
 
-#include <deal.II/lac/vector.h>
+#include <deal.II/base/timer.h>
 
-#include <filesystem>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace gearfem::contact
 {
-  /// One loaded tooth pair at one position.
-  struct ToothPairResult
+  /// The converged contact state of one position: what GearContactModel::solve returns, what
+  /// a warm start and a checkpoint read (the ContactSolution), and what post-processing
+  /// (post::evaluate_position) turns into STE, stiffness, load sharing, pressure and root
+  /// stress.
+  struct ContactState
   {
-    int pinion_tooth = 0, gear_tooth = 0;
-    double force = 0;         ///< normal load of the pair [N]
-    double share = 0;         ///< force / sum of forces
-    int active_nodes = 0;     ///< slave nodes in contact
-    double p_max = 0;         ///< peak recovered contact pressure [Pa]
-    double half_width = 0;    ///< from the ellipse fit [m]; 0 when unresolved
-    bool resolved = false;    ///< at least 5 nodes across the patch and a valid ellipse fit
-    double p_hertz = 0;       ///< Hertz p0 on the local involute radii of curvature [Pa]
-    double a_hertz = 0;       ///< Hertz half-width [m]
-    double radius_pinion = 0; ///< radius of the peak-pressure point on the pinion [m]
-    double radius_gear = 0;   ///< the same on the gear [m]
-    /// The loaded patch reaches a tip edge of either gear: its tip corner, tip rounding or
-    /// tip land (extended or corner contact). Its pressure is not Hertzian: at a sharp
-    /// corner it is singular and grows under refinement. false: flank-to-flank contact.
-    bool edge = false;
-    int slave_body = 1;       ///< body that carried the slave nodes of this pair
-    double root_stress_pinion = 0, root_stress_gear = 0; ///< peak fillet sigma_1 [Pa]
-    double root_radius_pinion = 0, root_radius_gear = 0; ///< where [m]
-    std::vector<std::array<double, 3>> profile; ///< (s [m] along the pinion flank from the peak, radius [m], p [Pa])
+    double phi1   = 0; ///< pinion roll angle [rad] (0 at C)
+    double torque = 0; ///< pinion torque T1 [N m]: the target (torque control) or the result
+    /// q = delta_theta [rad], load = T1 [N m], tangent dT1/d(delta_theta) [N m/rad], the
+    /// contact points, the nodal contact forces of both bodies, iterations and the wall
+    /// times of search, flexibility and solve.
+    ContactSolution solution;
+    double t_contact = 0; ///< wall time of the contact solve of this position [s]
+    double rotation() const { return solution.q; } ///< delta_theta [rad]
   };
 
-  struct PositionResult
+  /// One gear of a pair, ready for contact: its factorised elastic body (bore clamped;
+  /// sector cut edges clamped), the fine teeth that carry contact surfaces, and the contact
+  /// element size of its flanks.
+  struct GearBody
   {
-    std::string name;           ///< A, B, C, D, E or ""
-    double phi1 = 0;            ///< pinion roll angle [rad] (0 at C)
-    double torque = 0;          ///< target pinion torque T1 [N m]
-    double rotation = 0;        ///< delta_theta [rad]
-    double ste = 0;             ///< delta_theta r_b1 [m]
-    double normal_force = 0;    ///< F_n = T1 / r_b1 [N]
-    double k_secant = 0;        ///< F_n / STE [N/m]
-    double k_tangent = 0;       ///< dF_n / dSTE [N/m] (consistent tangent)
-    double torque_contact = 0;  ///< moment of the contact forces about O1 [N m]
-    double torque_reaction = 0; ///< reaction moment at the pinion bore [N m]
-    double torque_gear = 0;     ///< |moment of the contact forces on gear 2 about O2| [N m]
-    int n_pairs = 0;            ///< tooth pairs carrying load
-    double p_max = 0;           ///< peak pressure over the flank-to-flank (Hertzian) pairs [Pa]
-    double p_max_edge = 0;      ///< peak pressure over the edge/corner pairs [Pa] (mesh-dependent)
-    std::vector<ToothPairResult> pairs;
-    ContactSolution solution;
-    double max_root_stress_pinion = 0, max_root_stress_gear = 0; ///< [Pa]
-    double t_search = 0, t_compliance = 0, t_solve = 0, t_post = 0, t_total = 0; ///< [s]
-    dealii::Vector<double> u[2]; ///< body-frame displacements (kept only when asked)
+    std::unique_ptr<fem::ElasticBody> body;
+    std::vector<int> fine_teeth; ///< body-frame tooth indices
+    double contact_size = 0;     ///< element size on the drive flanks after refinement [m]
   };
+
+  /// Mesh gear i (1 or 2) of `pair`, build, constrain, assemble and factorise its body.
+  /// With a timer, the phases are its sections "mesh" and "assemble and factorise".
+  GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mesh,
+                           const fem::Elasticity &material, const fem::FeOptions &fe,
+                           dealii::TimerOutput *timer = nullptr);
 
   /// The bodies and solver of one pair.
   class GearContactModel
   {
   public:
-    /// Mesh both gears (mesh parameters per gear), build and factorise the bodies (bore
-    /// clamped; sector cut edges clamped), and the contact surfaces: drive flank, tip
-    /// rounding and tip of the fine teeth (slave side), plus the drive fillet (master
-    /// side, for tip-to-fillet corner contact under heavy load).
+    /// The contact model of two prepared gear bodies (build_gear_body): the contact
+    /// surfaces (drive flank, tip rounding and tip of the fine teeth on the slave side, plus
+    /// the drive fillet on the master side, for tip-to-fillet corner contact under heavy
+    /// load) and the two-body solver.
+    GearContactModel(const geometry::GearPair &pair, std::array<GearBody, 2> bodies,
+                     const ContactOptions &options);
+    /// Build both bodies (mesh parameters per gear) in this model's timer, then as above.
     GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mesh[2],
                      const fem::Elasticity material[2], const fem::FeOptions &fe,
                      const ContactOptions &options);
     ~GearContactModel();
 
-    /// Solve position phi1 [rad] at pinion torque T1 [N m] (> 0), warm-started from
-    /// `warm` (may be null). `keep_displacements` keeps u for VTU output.
-    PositionResult solve(double phi1, double torque, const PositionResult *warm = nullptr,
-                         bool keep_displacements = false);
+    /// Solve position phi1 [rad] at pinion torque T1 [N m] (> 0), warm-started from the
+    /// converged solution `warm` of a neighbouring position (may be null).
+    ContactState solve(double phi1, double torque, const ContactSolution *warm = nullptr);
     /// Rotation-controlled: the pinion turns by delta_theta [rad] (>= 0); T1 is the result.
-    PositionResult solve_rotation(double phi1, double delta_theta, const PositionResult *warm = nullptr,
-                                  bool keep_displacements = false);
+    ContactState solve_rotation(double phi1, double delta_theta, const ContactSolution *warm = nullptr);
 
-    /// Write the deformed pair (pair frame) with stresses and contact traction to a VTU.
-    void write_vtu(const PositionResult &r, const std::filesystem::path &file, double scale = 1.0) const;
+    /// Rigid placements (pair frame) of the pinion turned by `rotation` [rad] from its
+    /// conjugate position at phi1, and of gear 2 at phi1.
+    std::array<geometry::Placement, 2> placements(double phi1, double rotation) const;
 
     const geometry::GearPair &pair() const { return *pair_; }
     const fem::ElasticBody &body(int i) const { return *bodies_[i - 1]; }
     const TwoBodyContact &solver() const { return *solver_; }
+    /// Contact surface of gear i (its nodes are those of ContactPoint::node).
+    const ContactSurface &surface(int i) const { return *surfaces_[i - 1]; }
     unsigned int n_dofs() const { return bodies_[0]->n_dofs() + bodies_[1]->n_dofs(); }
-    double setup_seconds() const { return t_setup_; }
-    double mesh_seconds() const { return t_mesh_; }
+    /// Wall time of the set-up (mesh, assemble and factorise, contact surfaces) [s].
+    double setup_seconds() const;
+    /// Wall time of meshing both gears [s].
+    double mesh_seconds() const;
+    /// The phase timer: set-up sections and the cumulative "contact" section.
+    const dealii::TimerOutput &timer() const { return timer_; }
     /// Fine teeth (body-frame indices) of gear i.
     const std::vector<int> &fine_teeth(int i) const { return fine_[i - 1]; }
 
@@ -112,17 +107,14 @@ namespace gearfem::contact
     /// ContactOptions::per_zone_slaves).
     int zone_slave(double psi, double normal_force) const;
 
-    /// A loaded patch with fewer nodes is not resolved (its pressure peak is not reported
-    /// as resolved, and the ellipse fit is not attempted).
-    static constexpr int min_patch_nodes = 5;
-
   private:
-    PositionResult finish(double phi1, double torque, ContactSolution &&s, bool keep);
-    /// The contact point touches a tip edge (corner, tip rounding or tip land) of either gear.
-    bool at_tip_edge(const ContactPoint &p, const geometry::Placement &P1, const geometry::Placement &P2) const;
-    /// Peak pressure, profile, ellipse fit and Hertz comparison of one loaded pair.
-    void pressure_and_hertz(ToothPairResult &tp, const ContactSolution &sol, const geometry::Placement &P1,
-                            const geometry::Placement &P2) const;
+    /// Contact surfaces, tooth bookkeeping and solver on the bodies (timer section
+    /// "contact surfaces").
+    void set_up_contact(std::array<GearBody, 2> bodies);
+    /// The contact solve of one position (scene and solve) in timer section "contact".
+    /// `normal_force` [N] sizes the corner reach of the scene.
+    ContactState timed_solve(double phi1, double normal_force, Control control, double value,
+                             const ContactSolution *warm);
     const geometry::GearPair *pair_;
     std::unique_ptr<fem::ElasticBody> bodies_[2];
     std::unique_ptr<ContactSurface> surfaces_[2];
@@ -133,8 +125,11 @@ namespace gearfem::contact
     double sense_[2] = {1, -1};          ///< sign of d(body angle)/d(phi1)
     double h_reach_ = 0;                 ///< contact element size of the coarser flank [m]
     ContactOptions options_;
-    double t_setup_ = 0, t_mesh_ = 0;
+    dealii::TimerOutput timer_;
   };
+
+  /// Wall time [s] accumulated so far in section `name` of `timer` (0 if never entered).
+  double section_seconds(const dealii::TimerOutput &timer, const std::string &name);
 
   /// Pinion roll angles [rad]: `n` equally spaced over `pitches` angular pitches starting at
   /// `start` (end excluded).

@@ -47,6 +47,7 @@ namespace gearfem::loading
     for (std::size_t k = 0; k < np; ++k)
       {
         contact::ContactPoint p;
+        p.x = p.normal = p.master_point = geometry::Vec2::Zero(); // not read by a warm start
         p.slave_body = int(next());
         p.node       = int(next());
         p.force      = next();
@@ -73,12 +74,12 @@ namespace gearfem::loading
   {
     SweepOutcome outcome;
     const std::size_t np = plan.positions.size(), total = plan.size();
-    contact::PositionResult prev;
+    contact::ContactSolution prev;
     bool have_prev = false;
     if (start.have_warm && start.next > 0 && start.next < total && start.next % np != 0)
       {
-        prev.solution = start.warm;
-        have_prev     = true;
+        prev      = start.warm;
+        have_prev = true;
       }
     for (std::size_t k = start.next; k < total; ++k)
       {
@@ -90,13 +91,10 @@ namespace gearfem::loading
         p.phi1   = plan.positions[p.position_index].second;
         if (p.position_index == 0)
           have_prev = false; // each torque starts cold, from the first position
-        bool fields = false;
-        for (const auto *o : observers)
-          fields = fields || o->wants_fields(p);
-        contact::PositionResult r;
+        contact::ContactState s;
         try
           {
-            r = model.solve(p.phi1, p.torque, have_prev ? &prev : nullptr, fields);
+            s = model.solve(p.phi1, p.torque, have_prev ? &prev : nullptr);
           }
         catch (const SolverError &e)
           {
@@ -105,9 +103,9 @@ namespace gearfem::loading
             return outcome;
           }
         for (auto *o : observers)
-          o->finished(p, r);
+          o->finished(p, s);
         ++outcome.finished;
-        prev      = std::move(r);
+        prev      = std::move(s.solution);
         have_prev = true;
       }
     return outcome;

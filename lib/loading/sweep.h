@@ -1,11 +1,12 @@
 #pragma once
 // The quasi-static sweep over the mesh cycle: torques x positions of a GearContactModel,
 // with torque targeting per position (GearContactModel::solve), warm starts along each
-// torque's positions, and failure handling. Each finished position goes to the observers
-// (output tables, VTU files, progress, the checkpoint journal); the sweep itself writes
-// nothing. A sweep can start from a checkpoint (SweepStart): the positions before it are
-// skipped and the warm start is the one the uninterrupted run had, so the resumed results
-// equal those of an uninterrupted run.
+// torque's positions, and failure handling. Each converged contact state goes to the
+// observers (post-processing, which feeds the output tables, VTU files, progress and the
+// checkpoint journal); the sweep itself evaluates and writes nothing (loading does not
+// depend on post). A sweep can start from a checkpoint (SweepStart): the positions before
+// it are skipped and the warm start is the one the uninterrupted run had, so the resumed
+// results equal those of an uninterrupted run.
 #include "contact/gear_contact.h"
 
 #include <string>
@@ -34,11 +35,9 @@ namespace gearfem::loading
   {
   public:
     virtual ~SweepObserver() = default;
-    /// True if the displacement fields of this point are wanted (VTU output).
-    virtual bool wants_fields(const SweepPoint &) const { return false; }
-    /// A converged position. `r` may be modified (e.g. its fields released) by an observer
-    /// that has used them; observers run in the order given.
-    virtual void finished(const SweepPoint &p, contact::PositionResult &r) = 0;
+    /// A converged position; observers run in the order given. The state is the warm start
+    /// of the next position of the same torque.
+    virtual void finished(const SweepPoint &p, const contact::ContactState &s) = 0;
   };
 
   /// Where a sweep starts: the first point to solve and the warm start it would have had.

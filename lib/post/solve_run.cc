@@ -6,6 +6,7 @@
 #include "fem/output.h"
 #include "io/journal.h"
 #include "loading/sweep.h"
+#include "post/observers.h"
 
 #include <cmath>
 #include <iomanip>
@@ -57,16 +58,16 @@ namespace gearfem::post
     }
 
     /// Appends the rows of each finished position and remembers them for the journal.
-    class TablesObserver : public loading::SweepObserver
+    class TablesObserver : public PositionObserver
     {
     public:
       TablesObserver(io::SolveResults &t, double z_ratio, double face_width)
         : t_(t), z_ratio_(z_ratio), face_width_(face_width)
       {}
-      void finished(const loading::SweepPoint &p, contact::PositionResult &r) override
+      void finished(const loading::SweepPoint &p, const contact::ContactState &s, PositionResult &r) override
       {
         const std::size_t s0 = t_.sweep.n_rows(), p0 = t_.pairs.n_rows(), q0 = t_.pressure.n_rows();
-        append_position(t_, r, p.name, int(p.position_index), z_ratio_, face_width_);
+        append_position(t_, s, r, p.name, int(p.position_index), z_ratio_, face_width_);
         record = io::JournalRecord();
         record.index = p.index;
         for (std::size_t i = s0; i < t_.sweep.n_rows(); ++i)
@@ -84,7 +85,7 @@ namespace gearfem::post
     };
 
     /// Writes the VTU of the selected positions and collects the PVD records.
-    class VtuObserver : public loading::SweepObserver
+    class VtuObserver : public PositionObserver
     {
     public:
       VtuObserver(const contact::GearContactModel &model, const contact::SolveParameters &sp,
@@ -96,13 +97,13 @@ namespace gearfem::post
         return sp_.vtu == contact::SolveParameters::Vtu::all ||
                (sp_.vtu == contact::SolveParameters::Vtu::named && named_.count(p.position_index));
       }
-      void finished(const loading::SweepPoint &p, contact::PositionResult &r) override
+      void finished(const loading::SweepPoint &p, const contact::ContactState &s, PositionResult &r) override
       {
         last_file.clear();
         if (!wants_fields(p))
           return;
         last_file = vtu_name(p.torque, p.position_index);
-        model_.write_vtu(r, dir_ / last_file, sp_.vtu_scale);
+        write_vtu(model_, s, r, dir_ / last_file, sp_.vtu_scale);
         pvd[p.torque].emplace_back(p.phi1 * 180 / pi, last_file);
         r.u[0].reinit(0), r.u[1].reinit(0);
       }
@@ -117,16 +118,16 @@ namespace gearfem::post
     };
 
     /// Appends each finished position (rows, VTU name, warm start) to the journal.
-    class JournalObserver : public loading::SweepObserver
+    class JournalObserver : public PositionObserver
     {
     public:
       JournalObserver(std::filesystem::path file, const TablesObserver &tables, const VtuObserver &vtu)
         : file_(std::move(file)), tables_(tables), vtu_(vtu)
       {}
-      void finished(const loading::SweepPoint &, contact::PositionResult &r) override
+      void finished(const loading::SweepPoint &, const contact::ContactState &s, PositionResult &) override
       {
         io::JournalRecord rec = tables_.record;
-        rec.data["warm"]      = loading::pack_warm_start(r.solution);
+        rec.data["warm"]      = loading::pack_warm_start(s.solution);
         if (!vtu_.last_file.empty())
           rec.text["vtu"] = vtu_.last_file;
         io::append_journal(file_, rec);
@@ -138,18 +139,18 @@ namespace gearfem::post
       const VtuObserver &vtu_;
     };
 
-    class ProgressObserver : public loading::SweepObserver
+    class ProgressObserver : public PositionObserver
     {
     public:
       ProgressObserver(std::ostream *out, std::size_t total, std::size_t done)
         : progress_(out, total, "position", done)
       {}
-      void finished(const loading::SweepPoint &p, contact::PositionResult &r) override
+      void finished(const loading::SweepPoint &p, const contact::ContactState &s, PositionResult &r) override
       {
         std::ostringstream d;
         d << "T " << p.torque << " N m, roll " << std::fixed << std::setprecision(3) << p.phi1 * 180 / pi << " deg"
           << (p.name.empty() ? "" : " (" + p.name + ")") << ", STE " << std::setprecision(3) << r.ste * 1e6
-          << " um, pairs " << r.n_pairs << ", " << std::setprecision(2) << r.t_total << " s";
+          << " um, pairs " << r.n_pairs << ", " << std::setprecision(2) << s.t_contact + r.t_post << " s";
         progress_.step(p.index + 1, d.str());
       }
 
@@ -157,14 +158,15 @@ namespace gearfem::post
       Progress progress_;
     };
 
-    /// Loaded Hertzian pairs with fewer than min_patch_nodes across the patch, per torque.
-    std::map<double, int> count_unresolved(const io::SolveResults &t)
+    /// Unresolved loaded Hertzian pairs (fewer than Post/Min patch nodes across the patch,
+    /// load share above Post/Unresolved share), per torque.
+    std::map<double, int> count_unresolved(const io::SolveResults &t, double min_share)
     {
       std::map<double, int> out;
       const auto T = t.pairs.column("torque"), share = t.pairs.column("load share"),
                  res = t.pairs.column("resolved"), edge = t.pairs.column("edge contact");
       for (std::size_t i = 0; i < T.size(); ++i)
-        out[T[i]] += share[i] > 0.05 && res[i] == 0 && edge[i] == 0;
+        out[T[i]] += share[i] > min_share && res[i] == 0 && edge[i] == 0;
       return out;
     }
 
@@ -213,11 +215,11 @@ namespace gearfem::post
     }
   } // namespace
 
-  void append_position(io::SolveResults &t, const contact::PositionResult &r, const std::string &name,
-                       int index, double z_ratio, double face_width)
+  void append_position(io::SolveResults &t, const contact::ContactState &state, const PositionResult &r,
+                       const std::string &name, int index, double z_ratio, double face_width)
   {
     const double deg = 180 / pi;
-    const auto &s    = r.solution;
+    const auto &s    = state.solution;
     auto width       = [&](double k) { return k / (face_width * 1e3) * 1e-6; }; // N/m -> N/(mm um)
     double share     = 0;
     for (const auto &p : r.pairs)
@@ -228,7 +230,7 @@ namespace gearfem::post
                      r.torque_gear / (r.torque * z_ratio), r.p_max / 1e6, r.p_max_edge / 1e6,
                      r.max_root_stress_pinion / 1e6, r.max_root_stress_gear / 1e6, double(s.n_active),
                      double(s.geometry_iterations), double(s.active_set_iterations), double(s.load_cuts),
-                     s.complementarity, s.max_penetration * 1e6, r.t_total});
+                     s.complementarity, s.max_penetration * 1e6, state.t_contact + r.t_post});
     for (const auto &p : r.pairs)
       {
         t.pairs.add_row({r.torque, double(index), r.phi1 * deg, double(p.pinion_tooth), double(p.gear_tooth),
@@ -245,6 +247,8 @@ namespace gearfem::post
   SolveRunResult run_solve(contact::GearContactModel &model, const contact::GearContactInput &in,
                            const SolveRunOptions &options)
   {
+    validate(options.post);
+    const double contact_before = contact::section_seconds(model.timer(), "contact");
     const auto &pair = *in.pair;
     loading::SweepPlan plan;
     plan.positions = in.positions();
@@ -283,11 +287,14 @@ namespace gearfem::post
 
     JournalObserver journal_observer(journal, tables, vtu);
     ProgressObserver progress(options.out, plan.size(), start.next);
-    const auto outcome = loading::run_sweep(model, plan, {&tables, &vtu, &journal_observer, &progress}, start);
+    Evaluator evaluator(model, options.post);
+    EvaluatingObserver evaluate(evaluator, {&tables, &vtu, &journal_observer, &progress});
+    const auto outcome = loading::run_sweep(model, plan, {&evaluate}, start);
     run.solved     = outcome.finished;
     run.failure    = outcome.failure;
-    run.unresolved = count_unresolved(t);
+    run.unresolved = count_unresolved(t, options.post.unresolved_share);
 
+    dealii::TimerOutput::Scope scope(evaluator.timer(), "output");
     io::write_solve_results(t, options.output_dir);
     for (const auto &[T, records] : vtu.pvd)
       if (!records.empty())
@@ -298,6 +305,10 @@ namespace gearfem::post
         }
     if (run.failure.empty())
       std::filesystem::remove(journal); // complete: nothing to resume
+    scope.stop();
+    run.seconds = {{"contact", contact::section_seconds(model.timer(), "contact") - contact_before},
+                   {"post", contact::section_seconds(evaluator.timer(), "post")},
+                   {"output", contact::section_seconds(evaluator.timer(), "output")}};
     return run;
   }
 

@@ -8,6 +8,7 @@
 // Used by `gearfem solve`; callable by a batch driver or an optimiser without CLI code.
 #include "contact/parameters.h"
 #include "io/solve_results.h"
+#include "post/position.h"
 
 #include <filesystem>
 #include <map>
@@ -30,6 +31,7 @@ namespace gearfem::post
     /// InputError); without a journal the run starts from the beginning.
     bool resume = false;
     std::ostream *out = nullptr; ///< progress lines; null: silent
+    PostOptions post;            ///< thresholds of the evaluation (`Post` section)
   };
 
   struct SolveRunResult
@@ -38,13 +40,18 @@ namespace gearfem::post
     std::size_t resumed = 0;          ///< positions taken from the journal
     std::size_t solved  = 0;          ///< positions solved in this call
     std::string failure;              ///< the SolverError message, empty on success
-    std::map<double, int> unresolved; ///< per torque: loaded Hertzian pairs below min_patch_nodes
+    /// Per torque: unresolved loaded Hertzian pairs (below PostOptions::min_patch_nodes,
+    /// share above PostOptions::unresolved_share).
+    std::map<double, int> unresolved;
+    /// Wall time [s] of the phases of this call: "contact" (the solves), "post" (the
+    /// evaluation), "output" (tables, VTU, journal, results files).
+    std::map<std::string, double> seconds;
   };
 
-  /// The rows of one finished position (index = position index in the plan, name = its
+  /// The rows of one evaluated position (index = position index in the plan, name = its
   /// point name or "") in the sweep, pairs and pressure tables.
-  void append_position(io::SolveResults &tables, const contact::PositionResult &r, const std::string &name,
-                       int index, double z_ratio, double face_width);
+  void append_position(io::SolveResults &tables, const contact::ContactState &s, const PositionResult &r,
+                       const std::string &name, int index, double z_ratio, double face_width);
 
   /// Run the sweep of `in` on `model` and write the results (docs/output-format.md).
   SolveRunResult run_solve(contact::GearContactModel &model, const contact::GearContactInput &in,

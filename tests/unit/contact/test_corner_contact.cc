@@ -10,6 +10,7 @@
 // the defect it guards against.
 #include "contact/gear_contact.h"
 #include "contact/parameters.h"
+#include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -72,7 +73,10 @@ end
       in    = parse_gear_contact_input(prm);
       model = in.model();
     }
-    PositionResult at(double phi_deg) { return model->solve(phi_deg * deg, 100.0); }
+    post::PositionResult at(double phi_deg)
+    {
+      return post::evaluate_position(*model, model->solve(phi_deg * deg, 100.0));
+    }
   };
 
   double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
@@ -84,7 +88,7 @@ TEST(CornerContact, SlaveIndependentAndMirrorSymmetric)
   double worst_swap = 0, worst_mirror = 0, worst_root = 0;
   for (const double phi : {0.6, 0.75, 0.9})
     {
-      const PositionResult a1 = s1.at(phi), b1 = s1.at(-phi), a2 = s2.at(phi), b2 = s2.at(-phi);
+      const post::PositionResult a1 = s1.at(phi), b1 = s1.at(-phi), a2 = s2.at(phi), b2 = s2.at(-phi);
       std::cout << "phi +-" << phi << " deg: STE slave 1 " << a1.ste * 1e6 << " / " << b1.ste * 1e6
                 << " um, slave 2 " << a2.ste * 1e6 << " / " << b2.ste * 1e6 << " um\n";
       for (const auto &[x, y] : {std::make_pair(&a1, &a2), std::make_pair(&b1, &b2)})

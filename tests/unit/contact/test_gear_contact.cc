@@ -1,9 +1,11 @@
-// Two-gear contact on a coarse demo pair (50/50, m 3, b 20): equilibrium and conservation
-// checks, penalty against Lagrange, consistent tangent against a finite difference,
-// rotation control against torque control, load sharing at named points, bad input.
+// Two-gear contact on a coarse demo pair (50/50, m 3, b 20), each converged state evaluated
+// by lib/post: equilibrium and conservation checks, penalty against Lagrange, consistent
+// tangent against a finite difference, rotation control against torque control, load
+// sharing at named points, bad input.
 #include "base/errors.h"
 #include "contact/gear_contact.h"
 #include "contact/parameters.h"
+#include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -69,21 +71,36 @@ end
     static auto m = setup().model(ContactOptions());
     return *m;
   }
+  /// The contact solve and its evaluation, as one position of `gearfem solve`.
+  struct Position
+  {
+    ContactState state;
+    post::PositionResult r;
+  };
+  Position at(GearContactModel &m, double phi, double T, const Position *warm = nullptr)
+  {
+    Position p;
+    p.state = m.solve(phi, T, warm ? &warm->state.solution : nullptr);
+    p.r     = post::evaluate_position(m, p.state);
+    return p;
+  }
 } // namespace
 
 TEST(GearContact, EquilibriumAtPitchPoint)
 {
-  const double T = 200;
-  const auto r   = lagrange().solve(0.0, T);
+  const double T   = 200;
+  const auto p     = at(lagrange(), 0.0, T);
+  const auto &r    = p.r;
+  const auto &sol  = p.state.solution;
   std::cout << "C: DoFs " << lagrange().n_dofs() << ", STE " << r.ste * 1e6 << " um, k "
             << r.k_secant / 20e-3 * 1e-9 << " N/(mm um), pairs " << r.n_pairs << ", T_react "
             << r.torque_reaction << ", T2/T1 " << r.torque_gear / T << ", iterations "
-            << r.solution.geometry_iterations << "/" << r.solution.active_set_iterations << "\n";
-  for (const auto &h : r.solution.history)
+            << sol.geometry_iterations << "/" << sol.active_set_iterations << "\n";
+  for (const auto &h : sol.history)
     std::cout << "  " << h << "\n";
-  ASSERT_TRUE(r.solution.converged);
+  ASSERT_TRUE(sol.converged);
   // Torque targeting: -a^T lambda = T1 (1e-6 required).
-  EXPECT_NEAR(r.solution.load / T, 1.0, 1e-9);
+  EXPECT_NEAR(sol.load / T, 1.0, 1e-9);
   // Moment of the contact forces about O1 and the bore reaction moment equal T1: discrete
   // equilibrium of the pinion (K annihilates the rigid rotation exactly).
   EXPECT_NEAR(r.torque_contact / T, 1.0, 1e-6);
@@ -102,8 +119,9 @@ TEST(GearContact, EquilibriumAtPitchPoint)
 TEST(GearContact, TwoPairsAtStartOfContactAndSharingSumsToOne)
 {
   const double phiA = setup().pair->point("A").roll_angle;
-  const auto r      = lagrange().solve(phiA + 0.05 * (2 * M_PI / 50), 200.0);
-  ASSERT_TRUE(r.solution.converged);
+  const auto p      = at(lagrange(), phiA + 0.05 * (2 * M_PI / 50), 200.0);
+  const auto &r     = p.r;
+  ASSERT_TRUE(p.state.solution.converged);
   EXPECT_EQ(r.n_pairs, 2);
   double share = 0;
   for (const auto &p : r.pairs)
@@ -114,14 +132,16 @@ TEST(GearContact, TwoPairsAtStartOfContactAndSharingSumsToOne)
 TEST(GearContact, TangentMatchesFiniteDifferenceAndRotationControl)
 {
   const double phi = 0.3 * (2 * M_PI / 50);
-  const auto r1 = lagrange().solve(phi, 200.0);
-  const auto r2 = lagrange().solve(phi, 202.0, &r1);
+  const auto p1 = at(lagrange(), phi, 200.0);
+  const auto p2 = at(lagrange(), phi, 202.0, &p1);
+  const auto &r1 = p1.r, &r2 = p2.r;
   const double k_fd = (r2.normal_force - r1.normal_force) / (r2.ste - r1.ste);
   std::cout << "tangent " << r1.k_tangent << " vs finite difference " << k_fd << "\n";
   EXPECT_NEAR(r1.k_tangent / k_fd, 1.0, 0.02);
   // Rotation control at the rotation found by torque targeting gives back the torque.
   const auto rr = lagrange().solve_rotation(phi, r1.rotation);
   EXPECT_NEAR(rr.torque / 200.0, 1.0, 1e-6);
+  EXPECT_NEAR(post::evaluate_position(lagrange(), rr).ste / r1.ste, 1.0, 1e-6);
 }
 
 TEST(GearContact, PenaltyAgreesWithLagrange)
@@ -133,14 +153,31 @@ TEST(GearContact, PenaltyAgreesWithLagrange)
   auto pen10 = setup().model(o);
   for (const double phi : {0.0, setup().pair->point("D").roll_angle})
     {
-      const auto a = lagrange().solve(phi, 200.0);
-      const auto b = pen->solve(phi, 200.0);
-      const auto c = pen10->solve(phi, 200.0);
+      const auto a = at(lagrange(), phi, 200.0).r;
+      const auto b = at(*pen, phi, 200.0).r;
+      const auto c = at(*pen10, phi, 200.0).r;
       std::cout << "phi " << phi << ": STE lagrange " << a.ste * 1e6 << ", penalty " << b.ste * 1e6
                 << ", penalty x10 " << c.ste * 1e6 << " um\n";
       EXPECT_NEAR(b.ste / a.ste, 1.0, 0.005);
       EXPECT_NEAR(c.ste / b.ste, 1.0, 0.005);
     }
+}
+
+TEST(GearContact, BuiltFromTwoPreparedBodies)
+{
+  // The model of two bodies built separately (as an optimiser that changes one gear would)
+  // is the model of the mesh parameters: the same state to the last bit.
+  const auto &in = setup().in;
+  std::array<GearBody, 2> bodies = {build_gear_body(*in.pair, 1, in.mesh[0], in.material[0], in.fe),
+                                    build_gear_body(*in.pair, 2, in.mesh[1], in.material[1], in.fe)};
+  GearContactModel m(*in.pair, std::move(bodies), ContactOptions());
+  EXPECT_EQ(m.n_dofs(), lagrange().n_dofs());
+  const double phi = 0.3 * (2 * M_PI / 50);
+  const auto a = m.solve(phi, 200.0), b = lagrange().solve(phi, 200.0);
+  EXPECT_EQ(a.solution.q, b.solution.q);
+  EXPECT_EQ(a.solution.n_active, b.solution.n_active);
+  std::array<GearBody, 2> none;
+  EXPECT_THROW(GearContactModel(*in.pair, std::move(none), ContactOptions()), InputError);
 }
 
 TEST(GearContact, BadInput)
@@ -159,8 +196,9 @@ TEST(GearContact, PositionsExactlyAtAAndE)
   // contact forces balance T1.
   for (const char *n : {"A", "E"})
     {
-      const auto r = lagrange().solve(setup().pair->point(n).roll_angle, 200.0);
-      ASSERT_TRUE(r.solution.converged) << n;
+      const auto p  = at(lagrange(), setup().pair->point(n).roll_angle, 200.0);
+      const auto &r = p.r;
+      ASSERT_TRUE(p.state.solution.converged) << n;
       EXPECT_NEAR(r.torque_contact / 200.0, 1.0, 1e-9) << n;
       EXPECT_GE(r.n_pairs, 1) << n;
       double smallest = 1;

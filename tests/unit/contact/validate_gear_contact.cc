@@ -10,6 +10,7 @@
 #include "analytical/from_geometry.h"
 #include "analytical/iso6336.h"
 #include "contact/parameters.h"
+#include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -18,12 +19,25 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 using namespace gearfem;
 using namespace gearfem::contact;
 
 namespace
 {
+  /// Solve and evaluate one position. `warm` (may be null) holds the converged state of the
+  /// previous position, if any, and receives this one.
+  post::PositionResult solve(GearContactModel &m, double phi, double T,
+                             std::optional<ContactSolution> *warm = nullptr)
+  {
+    auto s = m.solve(phi, T, warm && *warm ? &**warm : nullptr);
+    auto r = post::evaluate_position(m, s);
+    if (warm)
+      *warm = std::move(s.solution);
+    return r;
+  }
+
   const char *demo = R"(
 subsection Rack
   set Module = 3
@@ -94,7 +108,7 @@ TEST(GearContactValidation, MeshConvergenceAtCAndD)
       dofs[l] = m->n_dofs();
       int k   = 0;
       for (const char *p : {"C", "D"})
-        ste[k++][l] = m->solve(in.pair->point(p).roll_angle, T).ste;
+        ste[k++][l] = solve(*m, in.pair->point(p).roll_angle, T).ste;
     }
   std::cout << "\n### Mesh convergence of STE (demo pair, 340 N m, Lagrange, Q2, h_contact = h_fillet = h)\n\n"
             << "| point | h = 0.4 mm | 0.2 mm | 0.1 mm | 0.05 mm | observed order (last 3) | reference STE [um] | "
@@ -135,20 +149,17 @@ TEST(GearContactValidation, PenaltyAgainstLagrangeOverTheCycle)
   in.contact.penalty_factor *= 10;
   auto pen10 = in.model();
   double d_pen = 0, d_pen10 = 0, ratio = 0, react = 0, contact_moment = 0;
-  PositionResult w[3];
-  bool have = false;
+  std::optional<ContactSolution> w[3];
   for (const auto &[n, phi] : positions)
     {
-      auto a = lag->solve(phi, T, have ? &w[0] : nullptr);
-      auto b = pen->solve(phi, T, have ? &w[1] : nullptr);
-      auto c = pen10->solve(phi, T, have ? &w[2] : nullptr);
+      auto a = solve(*lag, phi, T, &w[0]);
+      auto b = solve(*pen, phi, T, &w[1]);
+      auto c = solve(*pen10, phi, T, &w[2]);
       d_pen   = std::max(d_pen, std::abs(b.ste / a.ste - 1));
       d_pen10 = std::max(d_pen10, std::abs(c.ste / b.ste - 1));
       ratio   = std::max(ratio, std::abs(a.torque_gear / T - 1)); // z2/z1 = 1
       react   = std::max(react, std::abs(a.torque_reaction / T - 1));
       contact_moment = std::max(contact_moment, std::abs(a.torque_contact / T - 1));
-      w[0] = std::move(a), w[1] = std::move(b), w[2] = std::move(c);
-      have = true;
     }
   std::cout << "\n### Penalty against Lagrange and equilibrium (demo pair, 200 N m, 40 positions, h 0.25 mm)\n\n"
             << "| check | max over the cycle |\n|---|---|\n"
@@ -173,11 +184,10 @@ TEST(GearContactValidation, PressureAgainstHertzAlongThePath)
                "a_fit [mm] | a_Hertz [mm] |\n|---|---|---|---|---|---|---|---|---|\n";
   double worst = 0;
   int n = 0;
-  PositionResult prev;
-  bool have = false;
+  std::optional<ContactSolution> prev;
   for (const auto &[name, phi] : in.positions())
     {
-      auto r = m->solve(phi, T, have ? &prev : nullptr);
+      auto r = solve(*m, phi, T, &prev);
       for (const auto &p : r.pairs)
         if (p.resolved && !p.edge && p.active_nodes >= 8)
           {
@@ -188,7 +198,6 @@ TEST(GearContactValidation, PressureAgainstHertzAlongThePath)
                       << " | " << p.active_nodes << " | " << p.p_max / 1e6 << " | " << p.p_hertz / 1e6 << " | "
                       << ratio << " | " << p.half_width * 1e3 << " | " << p.a_hertz * 1e3 << " |\n";
           }
-      prev = std::move(r), have = true;
     }
   std::cout << "\nresolved involute pairs: " << n << ", max |p_max/p_Hertz - 1| = " << worst << "\n";
   EXPECT_GT(n, 10);
@@ -206,7 +215,7 @@ TEST(GearContactValidation, Seed001PitchPoint)
                "half-width fit/Hertz [mm] | nodes |\n|---|---|---|---|---|---|---|---|\n";
   for (int i = 0; i < 4; ++i)
     {
-      const auto r = m->solve(0.0, T[i]);
+      const auto r = solve(*m, 0.0, T[i]);
       ASSERT_FALSE(r.pairs.empty());
       const auto &p = *std::max_element(r.pairs.begin(), r.pairs.end(),
                                         [](const auto &a, const auto &b) { return a.share < b.share; });
@@ -226,7 +235,7 @@ TEST(GearContactValidation, RootStressAgainstIso6336AtHpstc)
   const double T = 340;
   auto in = input(demo, mesh_section(0.2, 0.1, 0.2));
   auto m  = in.model();
-  const auto r = m->solve(in.pair->point("D").roll_angle, T);
+  const auto r = solve(*m, in.pair->point("D").roll_angle, T);
   const auto &pin = in.pair->gear(1);
   namespace iso = analytical::iso6336;
   const auto cs  = iso::critical_section(analytical::fillet_curve(pin));

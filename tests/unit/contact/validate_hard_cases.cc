@@ -4,6 +4,7 @@
 // (moment of the contact forces = T1), and the physics stated in each row.
 #include "base/errors.h"
 #include "contact/parameters.h"
+#include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -50,15 +51,16 @@ namespace
     r.name = name, r.T = T;
     const auto t0 = std::chrono::steady_clock::now();
     auto m        = in.model();
-    PositionResult prev;
+    ContactSolution prev;
     bool have = false;
     double lo = 1e300, hi = -1e300, sum = 0;
     for (const double phi : phis)
       {
-        auto p = m->solve(phi, T, have ? &prev : nullptr);
+        auto s = m->solve(phi, T, have ? &prev : nullptr);
+        const auto p = post::evaluate_position(*m, s);
         ++r.n_pos;
-        r.converged += p.solution.converged;
-        r.max_cuts  = std::max(r.max_cuts, p.solution.load_cuts);
+        r.converged += s.solution.converged;
+        r.max_cuts  = std::max(r.max_cuts, s.solution.load_cuts);
         r.max_pairs = std::max(r.max_pairs, p.n_pairs);
         for (const auto &q : p.pairs)
           {
@@ -68,7 +70,7 @@ namespace
           }
         r.balance = std::max(r.balance, std::abs(p.torque_contact / T - 1));
         lo = std::min(lo, p.ste), hi = std::max(hi, p.ste), sum += p.ste;
-        prev = std::move(p), have = true;
+        prev = std::move(s.solution), have = true;
       }
     r.ste_mean = sum / r.n_pos, r.ste_pp = hi - lo;
     r.seconds  = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
