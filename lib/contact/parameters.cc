@@ -58,6 +58,13 @@ namespace gearfem::contact
                       "so that the corner is a node checked against the smooth mating flank "
                       "(docs/contact.md); `Slave body` elsewhere. fixed: every node of `Slave "
                       "body` (single-pass node-to-segment, for comparison). Units: none.");
+    prm.declare_entry("Gap", "integrated", Selection("integrated|node"),
+                      "How the gap of a slave node is measured. integrated: segment-to-segment "
+                      "(mortar-type), the gap weighted by the node's shape function over its slave "
+                      "faces, so that a contact patch of a few nodes sees the curved gap between "
+                      "them (slave-independent and smooth STE on coarse contact meshes); sharp "
+                      "slave corners keep the nodal gap (point contact). node: node-to-segment "
+                      "collocation at the slave nodes (docs/contact.md). Units: none.");
     prm.declare_entry("Friction coefficient", "0", Double(),
                       "Coulomb friction. Only frictionless contact (0) is implemented. Units: none. "
                       "Allowed: 0.");
@@ -78,6 +85,7 @@ namespace gearfem::contact
     const std::string slave     = prm.get("Slave body");
     o.slave = slave == "auto" ? (E2 < E1 ? 2 : 1) : std::stoi(slave);
     o.per_zone_slaves           = prm.get("Slave selection") == "per zone";
+    o.gap                       = gap_rule_from_string(prm.get("Gap"));
     const double mu = params::get_double(prm, "Friction coefficient");
     prm.leave_subsection();
     if (mu != 0.0)

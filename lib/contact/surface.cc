@@ -121,10 +121,7 @@ namespace gearfem::contact
               face.xi.push_back((t - face.t_lo) / (face.t_hi - face.t_lo));
             }
           // Consistent nodal weights: integral of N_j |X'(t)| dt, 4-point Gauss.
-          static const double gx[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
-                                       0.9305681557970263};
-          static const double gw[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
-                                       0.1739274225687269};
+          const double *gx = gauss4_x, *gw = gauss4_w;
           face.w.assign(face.nodes.size(), 0.0);
           for (int k = 0; k < 4; ++k)
             {

@@ -17,6 +17,12 @@ namespace gearfem::contact
 {
   using Vec2 = mesh::Vec2;
 
+  /// 4-point Gauss rule on [0, 1] (points, weights): exact for degree 7.
+  inline constexpr double gauss4_x[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
+                                         0.9305681557970263};
+  inline constexpr double gauss4_w[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
+                                         0.1739274225687269};
+
   /// One boundary node of the surface (both DoFs of one support point).
   struct SurfaceNode
   {

@@ -1,6 +1,7 @@
 // TwoBodyContact: candidate search, linearised gaps, flexibility cache, active-set and
 // penalty Newton solvers, outer geometric loop and load cutting.
 #include "contact/two_body.h"
+#include "contact/ncp.h"
 
 #include "base/errors.h"
 
@@ -31,150 +32,6 @@ namespace gearfem::contact
       return rotate(x - p.centre, -p.angle);
     }
 
-    /// Result of the complementarity solve on a fixed linearisation.
-    struct NcpResult
-    {
-      bool ok = false;
-      std::string why;
-      Eigen::VectorXd lambda, gap;
-      double q = 0, tangent = 0, complementarity = 0;
-      int iterations = 0;
-      std::vector<char> active;
-    };
-
-    /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
-    /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
-    /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
-    NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
-                        const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                        const Eigen::VectorXd &lambda0, int max_iterations)
-    {
-      const int m = int(W.rows());
-      NcpResult r;
-      r.q = control == Control::displacement ? value : q0;
-      r.lambda = Eigen::VectorXd::Zero(m);
-      r.gap    = ghat + a * r.q;
-      std::vector<char> active(m, 0);
-      bool any = false;
-      for (int k = 0; k < m; ++k)
-        if (lambda0.size() == m && lambda0[k] > 0)
-          active[k] = 1, any = true;
-      if (!any)
-        {
-          if (control == Control::load)
-            {
-              // The node that closes first as q grows.
-              int best = -1;
-              double qmin = 1e300;
-              for (int k = 0; k < m; ++k)
-                if (a[k] < 0 && ghat[k] / -a[k] < qmin)
-                  qmin = ghat[k] / -a[k], best = k;
-              if (best >= 0)
-                active[best] = 1;
-            }
-          else
-            for (int k = 0; k < m; ++k)
-              active[k] = r.gap[k] < 0;
-        }
-      std::set<std::vector<char>> seen;
-      for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations)
-        {
-          std::vector<int> A;
-          for (int k = 0; k < m; ++k)
-            if (active[k])
-              A.push_back(k);
-          const int n = int(A.size());
-          r.lambda.setZero();
-          if (control == Control::load)
-            {
-              if (n == 0)
-                {
-                  r.why = "no slave node can close its gap as the drive advances (no contact)";
-                  return r;
-                }
-              Eigen::MatrixXd K(n + 1, n + 1);
-              Eigen::VectorXd rhs(n + 1);
-              for (int i = 0; i < n; ++i)
-                {
-                  for (int j = 0; j < n; ++j)
-                    K(i, j) = W(A[i], A[j]);
-                  K(i, i) += D[A[i]];
-                  K(i, n) = K(n, i) = a[A[i]];
-                  rhs[i] = -ghat[A[i]];
-                }
-              K(n, n) = 0;
-              rhs[n]  = -value;
-              const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
-              if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
-                {
-                  r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
-                  return r;
-                }
-              for (int i = 0; i < n; ++i)
-                r.lambda[A[i]] = x[i];
-              r.q = x[n];
-            }
-          else if (n > 0)
-            {
-              Eigen::MatrixXd K(n, n);
-              Eigen::VectorXd rhs(n);
-              for (int i = 0; i < n; ++i)
-                {
-                  for (int j = 0; j < n; ++j)
-                    K(i, j) = W(A[i], A[j]);
-                  K(i, i) += D[A[i]];
-                  rhs[i] = -ghat[A[i]] - a[A[i]] * r.q;
-                }
-              const Eigen::VectorXd x = K.ldlt().solve(rhs);
-              for (int i = 0; i < n; ++i)
-                r.lambda[A[i]] = x[i];
-            }
-          r.gap = ghat + a * r.q + W * r.lambda;
-          std::vector<char> next(m, 0);
-          for (int k = 0; k < m; ++k)
-            {
-              const double c = 1.0 / W(k, k);
-              next[k]        = r.lambda[k] - c * r.gap[k] > 0;
-            }
-          if (next == active)
-            {
-              r.ok     = true;
-              r.active = active;
-              double num = 0, den = 0;
-              for (int k = 0; k < m; ++k)
-                {
-                  const double c  = 1.0 / W(k, k);
-                  const double gk = r.gap[k] + D[k] * r.lambda[k];
-                  const double v  = std::min(r.lambda[k], c * gk);
-                  num += v * v;
-                  den += r.lambda[k] * r.lambda[k];
-                }
-              r.complementarity = den > 0 ? std::sqrt(num / den) : 0.0;
-              if (n > 0)
-                {
-                  Eigen::MatrixXd K(n, n);
-                  Eigen::VectorXd aa(n);
-                  for (int i = 0; i < n; ++i)
-                    {
-                      for (int j = 0; j < n; ++j)
-                        K(i, j) = W(A[i], A[j]);
-                      K(i, i) += D[A[i]];
-                      aa[i] = a[A[i]];
-                    }
-                  r.tangent = aa.dot(K.ldlt().solve(aa));
-                }
-              return r;
-            }
-          if (!seen.insert(active).second)
-            {
-              r.why = "the active set cycles";
-              return r;
-            }
-          active = next;
-        }
-      r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
-      return r;
-    }
   } // namespace
 
   Method method_from_string(const std::string &s)
@@ -186,6 +43,16 @@ namespace gearfem::contact
     throw InputError("Contact/Method", s, "penalty | lagrange");
   }
   const char *to_string(Method m) { return m == Method::penalty ? "penalty" : "lagrange"; }
+
+  GapRule gap_rule_from_string(const std::string &s)
+  {
+    if (s == "node")
+      return GapRule::node;
+    if (s == "integrated")
+      return GapRule::integrated;
+    throw InputError("Contact/Gap", s, "node | integrated");
+  }
+  const char *to_string(GapRule g) { return g == GapRule::node ? "node" : "integrated"; }
 
   void ContactOptions::validate() const
   {
@@ -230,6 +97,32 @@ namespace gearfem::contact
             const double L = (pc.curve.point(f.t_hi) - pc.curve.point(f.t_lo)).norm();
             for (const int n : f.nodes)
               c.node_h[n] = std::max(c.node_h[n], L);
+          }
+        // Faces around each node, and the kinks: a node with one face (surface end) or
+        // whose faces' normals differ there (a sharp tip corner).
+        c.node_faces.assign(s.nodes().size(), {});
+        for (std::size_t f = 0; f < s.faces().size(); ++f)
+          for (const int n : s.faces()[f].nodes)
+            c.node_faces[n].push_back(int(f));
+        c.kink.assign(s.nodes().size(), 0);
+        for (std::size_t n = 0; n < s.nodes().size(); ++n)
+          {
+            const auto &nf = c.node_faces[n];
+            if (nf.size() < 2)
+              {
+                c.kink[n] = 1;
+                continue;
+              }
+            std::vector<Vec2> normals;
+            for (const int f : nf)
+              {
+                const auto &face = s.faces()[f];
+                const double t   = face.nodes.front() == int(n) ? face.t_lo : face.t_hi;
+                normals.push_back(s.outward_normal(face.piece, t));
+              }
+            for (const auto &nv : normals)
+              if (nv.dot(normals.front()) < std::cos(1e-3))
+                c.kink[n] = 1;
           }
         c.C = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
         c.have.assign(c.dofs.size(), 0);
@@ -362,53 +255,138 @@ namespace gearfem::contact
     return r;
   }
 
-  std::vector<TwoBodyContact::Candidate> TwoBodyContact::search(const Scene &scene, double q) const
+  bool TwoBodyContact::project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out) const
   {
-    const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
-    std::vector<Candidate> cand;
-    for (const auto &[S, i] : slaves(scene))
+    const ContactSurface &ms = surface(M);
+    const auto &use          = scene.master_pieces[M - 1];
+    const geometry::Placement PM = placed(scene, M, q);
+    const Vec2 y                 = to_body(PM, xs);
+    out.pr = ms.project(y, options_.search_distance, use);
+    if (out.pr.piece < 0)
+      return false;
+    // Closest point on the displaced master: project y - u_m(t), fixed point.
+    for (int k = 0; k < 3; ++k)
       {
-        const int M = 3 - S;
-        const ContactSurface &ms = surface(M);
-        const auto &use          = scene.master_pieces[M - 1];
-        const auto &nd           = surface(S).nodes()[i];
-        const Vec2 xs = P[S - 1].apply(nd.x) + P[S - 1].apply_vector(displacement(S, i));
-        const Vec2 y  = to_body(P[M - 1], xs);
-        Candidate c;
-        c.S = S, c.node = i;
-        c.pr = ms.project(y, options_.search_distance, use);
-        if (c.pr.piece < 0)
-          continue;
-        // Closest point on the displaced master: project y - u_m(t), fixed point.
-        for (int k = 0; k < 3; ++k)
-          {
-            c.face          = ms.face_at(c.pr.piece, c.pr.t, c.shape);
-            const Vec2 um   = interpolate(M, c.face, c.shape);
-            const auto next = ms.project(y - um, options_.search_distance, use);
-            if (next.piece < 0)
-              break;
-            const bool same = next.piece == c.pr.piece && std::abs(next.t - c.pr.t) < 1e-12;
-            c.pr            = next;
-            if (same)
-              break;
-          }
-        c.face        = ms.face_at(c.pr.piece, c.pr.t, c.shape);
-        const Vec2 um = interpolate(M, c.face, c.shape);
-        c.g           = (y - c.pr.point - um).dot(c.pr.normal);
-        if (std::abs(c.g) > options_.search_distance)
-          continue;
-        c.n_pair = P[M - 1].apply_vector(c.pr.normal);
-        cand.push_back(std::move(c));
+        out.face        = ms.face_at(out.pr.piece, out.pr.t, out.shape);
+        const Vec2 um   = interpolate(M, out.face, out.shape);
+        const auto next = ms.project(y - um, options_.search_distance, use);
+        if (next.piece < 0)
+          break;
+        const bool same = next.piece == out.pr.piece && std::abs(next.t - out.pr.t) < 1e-12;
+        out.pr          = next;
+        if (same)
+          break;
       }
-    return cand;
+    out.face      = ms.face_at(out.pr.piece, out.pr.t, out.shape);
+    const Vec2 um = interpolate(M, out.face, out.shape);
+    out.g         = (y - out.pr.point - um).dot(out.pr.normal);
+    if (std::abs(out.g) > options_.search_distance)
+      return false;
+    out.n_pair = PM.apply_vector(out.pr.normal);
+    return true;
   }
 
-  TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene,
-                                                          const std::vector<Candidate> &cand, double q,
+  bool TwoBodyContact::integrate_gap(const Scene &scene, double q, Candidate &c,
+                                     std::vector<FaceSample> &samples, std::vector<int> &face_sample) const
+  {
+    const int S = c.S, M = 3 - S;
+    const ContactSurface &ss = surface(S);
+    const auto &cS           = cache_[S - 1];
+    if (cS.kink[c.node])
+      return false; // a corner is a point contact: nodal gap
+    const geometry::Placement PS = placed(scene, S, q);
+    // Gauss samples of each face around the node (once per face and search): 4 points on
+    // each sub-segment between consecutive face nodes, where the hats are linear.
+    for (const int f : cS.node_faces[c.node])
+      {
+        if (face_sample[f] != -1)
+          continue;
+        const auto &face = ss.faces()[f];
+        const auto &pc   = ss.body().mesh().pieces[face.piece];
+        const int first  = int(samples.size());
+        bool ok          = true;
+        for (std::size_t l = 0; l + 1 < face.nodes.size() && ok; ++l)
+          for (int k = 0; k < 4 && ok; ++k)
+            {
+              FaceSample sm;
+              sm.sub         = int(l);
+              sm.eta         = gauss4_x[k];
+              const double x = face.xi[l] + sm.eta * (face.xi[l + 1] - face.xi[l]);
+              const double t = face.t_lo + x * (face.t_hi - face.t_lo);
+              sm.slave_face  = ss.face_at(face.piece, t, sm.slave_shape);
+              sm.ds = pc.curve.d1(t).norm() * (face.t_hi - face.t_lo) * (face.xi[l + 1] - face.xi[l]) * gauss4_w[k];
+              sm.gp.x       = pc.curve.point(t);
+              const Vec2 us = interpolate(S, sm.slave_face, sm.slave_shape);
+              const Vec2 xs = PS.apply(sm.gp.x) + PS.apply_vector(us);
+              ok = sm.slave_face == f && project_point(scene, M, xs, q, sm.gp) && !sm.gp.pr.corner;
+              samples.push_back(std::move(sm));
+            }
+        face_sample[f] = ok ? first : -2;
+      }
+    c.terms.clear();
+    double g = 0, w = 0;
+    for (const int f : cS.node_faces[c.node])
+      {
+        if (face_sample[f] < 0)
+          {
+            c.terms.clear();
+            return false; // a sample with no smooth master point: nodal gap
+          }
+        const auto &face = ss.faces()[f];
+        const int j = int(std::find(face.nodes.begin(), face.nodes.end(), c.node) - face.nodes.begin());
+        const int n = 4 * (int(face.nodes.size()) - 1);
+        for (int i = face_sample[f]; i < face_sample[f] + n; ++i)
+          {
+            const auto &sm   = samples[i];
+            const double phi = sm.sub == j ? 1 - sm.eta : (sm.sub == j - 1 ? sm.eta : 0.0);
+            if (phi == 0)
+              continue;
+            c.terms.emplace_back(i, phi * sm.ds);
+            w += phi * sm.ds;
+            g += phi * sm.ds * sm.gp.g;
+          }
+      }
+    if (!(w > 0))
+      {
+        c.terms.clear();
+        return false;
+      }
+    for (auto &t : c.terms)
+      t.second /= w;
+    g /= w;
+    c.g = g;
+    return true;
+  }
+
+  TwoBodyContact::SearchResult TwoBodyContact::search(const Scene &scene, double q) const
+  {
+    const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
+    SearchResult r;
+    std::vector<int> face_sample[2] = {std::vector<int>(s1_->faces().size(), -1),
+                                       std::vector<int>(s2_->faces().size(), -1)};
+    for (const auto &[S, i] : slaves(scene))
+      {
+        const auto &nd = surface(S).nodes()[i];
+        const Vec2 xs = P[S - 1].apply(nd.x) + P[S - 1].apply_vector(displacement(S, i));
+        Candidate c;
+        c.S = S, c.node = i;
+        if (!project_point(scene, 3 - S, xs, q, c.at))
+          continue;
+        c.at.x = nd.x;
+        c.g    = c.at.g;
+        if (options_.gap == GapRule::integrated)
+          integrate_gap(scene, q, c, r.samples, face_sample[S - 1]);
+        r.cand.push_back(std::move(c));
+      }
+    return r;
+  }
+
+  TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene, const SearchResult &sr, double q,
                                                           const std::vector<double> &lambda_node,
                                                           double &t_compliance)
   {
-    const int m = int(cand.size());
+    const auto &cand = sr.cand;
+    const int m      = int(cand.size());
     const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
     // Material scale for the penalty: the smaller E.
     const double E = std::min(s1_->body().material().youngs_modulus, s2_->body().material().youngs_modulus);
@@ -423,35 +401,66 @@ namespace gearfem::contact
     L.B[1].assign(m, {});
     L.a.resize(m), L.ghat.resize(m), L.D.resize(m), L.lambda0.resize(m);
     std::vector<int> used[2];
+    // Adds the gap of one slave point (its own nodal weights `slave_shape` on the slave face,
+    // or the node itself) with weight `coef` to row k: the slave and master force
+    // directions, and the arm dg/dq. Body 1 is the driven body, slave or master; its share
+    // of the force acts at its nodes (weights N_j), so the arm is the nodal one: then
+    // -a^T lambda is exactly the moment of the nodal forces about O1.
+    const auto add_point = [&](int k, int S, const GapPoint &gp, const std::vector<int> &slave_nodes,
+                               const std::vector<double> &slave_shape, double coef) {
+      const int M      = 3 - S;
+      const auto &ss   = surface(S);
+      const auto &ms   = surface(M);
+      const Vec2 nS    = rotate(gp.n_pair, -P[S - 1].angle);
+      const Vec2 nM    = gp.pr.normal;
+      const auto &cS   = cache_[S - 1];
+      const auto &cM   = cache_[M - 1];
+      for (std::size_t l = 0; l < slave_nodes.size(); ++l)
+        {
+          const auto &sn = ss.nodes()[slave_nodes[l]];
+          const double v = coef * slave_shape[l];
+          L.B[S - 1][k].push_back({cS.index[sn.dof_x], v * nS.x()});
+          L.B[S - 1][k].push_back({cS.index[sn.dof_y], v * nS.y()});
+          if (S == 1)
+            L.a[k] += v * gp.n_pair.dot(velocity(P[0].apply(sn.x)));
+        }
+      const auto &face = ms.faces()[gp.face];
+      for (std::size_t j = 0; j < face.nodes.size(); ++j)
+        {
+          const auto &mn = ms.nodes()[face.nodes[j]];
+          const double v = coef * gp.shape[j];
+          L.B[M - 1][k].push_back({cM.index[mn.dof_x], -v * nM.x()});
+          L.B[M - 1][k].push_back({cM.index[mn.dof_y], -v * nM.y()});
+          if (M == 1)
+            L.a[k] -= v * gp.n_pair.dot(velocity(P[0].apply(mn.x)));
+        }
+    };
     for (int k = 0; k < m; ++k)
       {
         const auto &c  = cand[k];
-        const int S = c.S, M = 3 - S;
+        const int S    = c.S;
         const auto &nd = surface(S).nodes()[c.node];
-        const auto &ms = surface(M);
-        const Vec2 nS  = rotate(c.n_pair, -P[S - 1].angle);
-        const Vec2 nM  = c.pr.normal;
         auto &cS       = cache_[S - 1];
-        auto &cM       = cache_[M - 1];
-        L.B[S - 1][k].push_back({cS.index[nd.dof_x], nS.x()});
-        L.B[S - 1][k].push_back({cS.index[nd.dof_y], nS.y()});
-        const auto &face = ms.faces()[c.face];
-        for (std::size_t j = 0; j < face.nodes.size(); ++j)
-          {
-            const auto &mn = ms.nodes()[face.nodes[j]];
-            L.B[M - 1][k].push_back({cM.index[mn.dof_x], -c.shape[j] * nM.x()});
-            L.B[M - 1][k].push_back({cM.index[mn.dof_y], -c.shape[j] * nM.y()});
-          }
-        // dg/dq: body 1 is the driven body, slave or master. As master, its share of the
-        // force acts at the face nodes (weights N_j), so the arm is the nodal one: then
-        // -a^T lambda is exactly the moment of the nodal forces about O1.
-        if (S == 1)
-          L.a[k] = c.n_pair.dot(velocity(P[0].apply(nd.x)));
+        L.a[k]         = 0;
+        if (c.terms.empty())
+          add_point(k, S, c.at, {c.node}, {1.0}, 1.0);
         else
+          for (const auto &[i, coef] : c.terms)
+            {
+              const auto &sm = sr.samples[i];
+              add_point(k, S, sm.gp, surface(S).faces()[sm.slave_face].nodes, sm.slave_shape, coef);
+            }
+        for (int b = 0; b < 2; ++b)
           {
-            L.a[k] = 0;
-            for (std::size_t j = 0; j < face.nodes.size(); ++j)
-              L.a[k] -= c.shape[j] * c.n_pair.dot(velocity(P[0].apply(ms.nodes()[face.nodes[j]].x)));
+            auto &row = L.B[b][k];
+            std::sort(row.begin(), row.end());
+            std::size_t n = 0;
+            for (std::size_t i = 0; i < row.size(); ++i)
+              if (n > 0 && row[n - 1].first == row[i].first)
+                row[n - 1].second += row[i].second;
+              else
+                row[n++] = row[i];
+            row.resize(n);
           }
         double btu = 0;
         for (int b = 0; b < 2; ++b)
@@ -521,20 +530,20 @@ namespace gearfem::contact
         const auto &c  = cand[k];
         const int M    = 3 - c.S;
         const auto &nd = surface(c.S).nodes()[c.node];
-        const auto &mp = surface(M).body().mesh().pieces[c.pr.piece];
+        const auto &mp = surface(M).body().mesh().pieces[c.at.pr.piece];
         ContactPoint p;
         p.slave_body    = c.S;
         p.node          = c.node;
         p.slave_tooth   = nd.tooth;
-        p.master_piece  = c.pr.piece;
+        p.master_piece  = c.at.pr.piece;
         p.master_tooth  = mp.tooth;
-        p.master_t      = c.pr.t;
+        p.master_t      = c.at.pr.t;
         p.slave_code    = mesh::boundary::code_of(nd.boundary_id);
         p.master_code   = mesh::boundary::code_of(mp.boundary_id);
-        p.master_corner = c.pr.corner;
-        p.master_point  = placed(scene, M, q).apply(c.pr.point);
+        p.master_corner = c.at.pr.corner;
+        p.master_point  = placed(scene, M, q).apply(c.at.pr.point);
         p.x             = placed(scene, c.S, q).apply(nd.x);
-        p.normal        = c.n_pair;
+        p.normal        = c.at.n_pair;
         p.gap           = gap[k];
         p.force         = lambda[k];
         p.weight        = nd.weight;
@@ -589,7 +598,8 @@ namespace gearfem::contact
     for (int it = 0; it < options_.max_geometry_iterations; ++it)
       {
         auto t0 = Clock::now();
-        const std::vector<Candidate> cand = search(scene, q);
+        const SearchResult sr = search(scene, q);
+        const std::vector<Candidate> &cand = sr.cand;
         out.t_search += since(t0);
         const int m = int(cand.size());
         if (m == 0)
@@ -608,7 +618,7 @@ namespace gearfem::contact
           }
 
         t0 = Clock::now();
-        const Linearisation lin = linearise(scene, cand, q, lambda_node, out.t_compliance);
+        const Linearisation lin = linearise(scene, sr, q, lambda_node, out.t_compliance);
         NcpResult ncp = solve_ncp(lin.W, lin.D, lin.a, lin.ghat, control, value, q, lin.lambda0,
                                   options_.max_active_set_iterations);
         out.active_set_iterations += ncp.iterations;

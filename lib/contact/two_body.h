@@ -51,6 +51,22 @@ namespace gearfem::contact
   Method method_from_string(const std::string &s); ///< "penalty" | "lagrange", else InputError
   const char *to_string(Method m);
 
+  /// How the gap of a slave node is measured.
+  enum class GapRule
+  {
+    /// Node-to-segment: the gap at the slave node itself (collocation).
+    node,
+    /// Segment-to-segment (mortar-type): the gap weighted over the slave faces around the
+    /// node, g_j = int phi_j g ds / int phi_j ds, with phi_j the piecewise-linear hat of the
+    /// node on the polyline of face nodes (positive weights: the quadratic shape functions
+    /// have negative lobes that bias vertex and mid-side gaps apart), Gauss points projected
+    /// onto the exact master. Slave kinks (a sharp tip corner) and nodes whose faces reach a master corner
+    /// keep the nodal gap: a corner is a point contact.
+    integrated
+  };
+  GapRule gap_rule_from_string(const std::string &s); ///< "node" | "integrated", else InputError
+  const char *to_string(GapRule g);
+
   struct ContactOptions
   {
     Method method = Method::lagrange;
@@ -72,6 +88,8 @@ namespace gearfem::contact
     /// is the slave of that pair (so that a corner is always a node checked against a
     /// smooth master flank); `slave` elsewhere. false: every node of `slave` (single pass).
     bool per_zone_slaves = true;
+    /// Nodal or integrated (segment-to-segment) gaps.
+    GapRule gap = GapRule::integrated;
     /// Throws InputError naming the `Contact` entry.
     void validate() const;
   };
@@ -165,14 +183,42 @@ namespace gearfem::contact
     geometry::Placement placed(const Scene &scene, int body, double q) const;
 
   private:
+    /// One point of a slave surface (a node, or a Gauss point of a slave face) projected
+    /// onto the displaced master.
+    struct GapPoint
+    {
+      int face = -1;             ///< master face
+      Projection pr;             ///< closest point on the master (master body frame)
+      std::vector<double> shape; ///< master face shape values at the closest point
+      double g = 0;              ///< current normal gap [m]
+      Vec2 n_pair;               ///< master outward normal, pair frame
+      Vec2 x;                    ///< the slave point, undeformed, slave body frame
+    };
+    /// A Gauss point of a slave face: its gap point, the slave face and the face's shape
+    /// values there, the arc-length weight ds [m], and where it lies on the node polyline
+    /// of the face (between face nodes `sub` and `sub + 1`, at eta in [0, 1]).
+    struct FaceSample
+    {
+      GapPoint gp;
+      int slave_face = -1;
+      std::vector<double> slave_shape;
+      double ds = 0;
+      int sub = 0;
+      double eta = 0;
+    };
     /// One slave node within the search distance of the other body.
     struct Candidate
     {
-      int S = 1, node = -1, face = -1; ///< slave body, its surface node, master face
-      Projection pr;                   ///< closest point on the master (master body frame)
-      std::vector<double> shape;       ///< master face shape values at the closest point
-      double g = 0;                    ///< current normal gap [m]
-      Vec2 n_pair;                     ///< master outward normal, pair frame
+      int S = 1, node = -1;         ///< slave body, its surface node
+      GapPoint at;                  ///< the node's own projection
+      /// Integrated gap: (sample index, N_j(x_k) ds_k / w_j); empty: the nodal gap.
+      std::vector<std::pair<int, double>> terms;
+      double g = 0;                 ///< current gap (nodal or integrated) [m]
+    };
+    struct SearchResult
+    {
+      std::vector<Candidate> cand;
+      std::vector<FaceSample> samples;
     };
     /// The contact problem linearised about the current state: g = ghat + a q + W lambda.
     struct Linearisation
@@ -190,11 +236,20 @@ namespace gearfem::contact
       std::vector<char> have;                     ///< column computed
       Eigen::VectorXd u;                          ///< current elastic displacement on the universe
       std::vector<double> node_h;                 ///< longest face chord at each surface node [m]
+      std::vector<std::vector<int>> node_faces;   ///< surface faces around each node
+      std::vector<char> kink;                     ///< node at a surface end or a normal jump (a corner)
     };
     ContactSolution solve_once(const Scene &scene, Control control, double value,
                                const ContactSolution *warm);
-    std::vector<Candidate> search(const Scene &scene, double q) const;
-    Linearisation linearise(const Scene &scene, const std::vector<Candidate> &cand, double q,
+    SearchResult search(const Scene &scene, double q) const;
+    /// Project slave point xs (pair frame) onto body M's displaced master (fixed point on the
+    /// master displacement). false when nothing lies within the search distance.
+    bool project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out) const;
+    /// Gauss samples of the slave faces around candidate c, and its integrated gap terms;
+    /// false (nodal gap kept) where a sample has no smooth master point.
+    bool integrate_gap(const Scene &scene, double q, Candidate &c, std::vector<FaceSample> &samples,
+                       std::vector<int> &face_sample) const;
+    Linearisation linearise(const Scene &scene, const SearchResult &sr, double q,
                             const std::vector<double> &lambda_node, double &t_compliance);
     void fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
                        const Linearisation &lin, const Eigen::VectorXd &lambda,

@@ -1,6 +1,7 @@
 // Gear body domains (full gear or sector) from a ToothProfile.
 #include "base/errors.h"
 #include "base/number.h"
+#include "base/roots.h"
 #include "mesh/gear_mesh.h"
 
 #include <algorithm>
@@ -23,12 +24,20 @@ namespace gearfem::mesh
 
   double coast_size(const GearMeshParameters &p) { return p.h_coast > 0 ? p.h_coast : p.h_fillet; }
 
+  double corner_size(const GearMeshParameters &p, double module)
+  {
+    const double h = contact_size(p, module);
+    return p.h_corner > 0 ? std::min(p.h_corner, h) : 0.25 * h;
+  }
+
   void GearMeshParameters::validate() const
   {
     if (model == Model::sector && sector_teeth < 1)
       throw InputError("Mesh/Sector teeth", std::to_string(sector_teeth), ">= 1");
     if (!(h_contact >= 0))
       throw InputError("Mesh/h_contact", to_string_g(h_contact * 1e3) + " mm", ">= 0 (0: m_n/30)");
+    if (!(h_corner >= 0))
+      throw InputError("Mesh/h_corner", to_string_g(h_corner * 1e3) + " mm", ">= 0 (0: h_contact/4)");
     if (!(h_coast >= 0) || h_coast > h_body)
       throw InputError("Mesh/h_coast", to_string_g(h_coast * 1e3) + " mm", "[0, h_body] (0: h_fillet)");
     require_greater("Mesh/h_fillet", h_fillet * 1e3, 0.0, "mm");
@@ -163,6 +172,59 @@ namespace gearfem::mesh
                        "a mesh of <= 2e6 cells (estimated: " + to_string_g(estimate) + ")",
                        "use Model = sector, or larger h_body/h_tooth");
   }
+
+  /// The sharp drive tip corner of a tooth outline: where the drive flank meets the tip land
+  /// without a tip rounding. For each of the two segments, the parameter at chord distance
+  /// `length` from the corner (the chord grows monotonically along a short flank or tip
+  /// arc) and the parameter of the corner end.
+  struct CornerZone
+  {
+    int segment[2] = {-1, -1};
+    double t_cut[2] = {0, 0}, t_corner[2] = {0, 0};
+    bool contains(int s, double t) const
+    {
+      for (int i = 0; i < 2; ++i)
+        if (segment[i] == s)
+          return (t - t_cut[i]) * (t - t_corner[i]) <= 0;
+      return false;
+    }
+  };
+  CornerZone drive_corner(const std::vector<geometry::ProfileSegment> &segs, double length)
+  {
+    using geometry::SegmentType;
+    CornerZone z;
+    int tip = -1;
+    for (std::size_t s = 0; s < segs.size(); ++s)
+      if (segs[s].type == SegmentType::tip)
+        tip = int(s);
+    for (int flank = 0; flank < int(segs.size()) && tip >= 0; ++flank)
+    {
+    if (segs[flank].type != SegmentType::flank || segs[flank].side != geometry::Side::drive)
+      continue;
+    const auto &f = segs[flank], &t = segs[tip];
+    const double tol = 1e-9 * f.curve->point(f.t1).norm();
+    for (const double tf : {f.t0, f.t1})
+      for (const double tt : {t.t0, t.t1})
+        if ((f.curve->point(tf) - t.curve->point(tt)).norm() < tol)
+          {
+            const Vec2 corner = f.curve->point(tf);
+            const std::pair<int, double> ends[2] = {{flank, tf}, {tip, tt}};
+            for (int i = 0; i < 2; ++i)
+              {
+                const auto &sg  = segs[ends[i].first];
+                const double te = ends[i].second, to = te == sg.t0 ? sg.t1 : sg.t0;
+                if ((sg.curve->point(to) - corner).norm() <= length)
+                  return CornerZone(); // the segment is shorter than the zone: no grading
+                const double t_cut = base::find_root_bisection(
+                  [&](double x) { return (sg.curve->point(x) - corner).norm() - length; }, te, to,
+                  "tip-corner zone: chord from the corner = 2 h_contact");
+                z.segment[i] = ends[i].first, z.t_cut[i] = t_cut, z.t_corner[i] = te;
+              }
+            return z;
+          }
+    }
+    return z;
+  }
   } // namespace
 
   boundary::Code segment_code(geometry::SegmentType type, geometry::Side side)
@@ -201,6 +263,10 @@ namespace gearfem::mesh
     d.growth = p.growth;
     Loop outer;
     const auto &segs = tooth.segments();
+    // A sharp drive tip corner gets h_corner over the last 2 h_contact of flank and tip land.
+    const double h_corner = corner_size(p, m);
+    const CornerZone corner =
+      h_corner < contact_size(p, m) ? drive_corner(segs, 2 * contact_size(p, m)) : CornerZone();
     for (const int k : model_teeth(p, z))
       {
         const double angle = 2.0 * pi * k / z;
@@ -226,6 +292,9 @@ namespace gearfem::mesh
             piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
             // Split fine flanks at the requested radii (those inside the piece).
             std::vector<double> cuts;
+            for (int i = 0; i < 2; ++i)
+              if (is_fine && corner.segment[i] == int(s))
+                cuts.push_back(corner.t_cut[i]);
             if (is_fine && sg.type == geometry::SegmentType::flank)
               for (const double r : p.flank_split_radii)
                 {
@@ -243,10 +312,14 @@ namespace gearfem::mesh
                 BoundaryPiece first = piece;
                 first.t0            = t_prev;
                 first.t1            = c;
+                if (is_fine && corner.contains(int(s), 0.5 * (first.t0 + first.t1)))
+                  first.size = h_corner;
                 outer.pieces.push_back(first);
                 t_prev = c;
               }
             piece.t0 = t_prev;
+            if (is_fine && corner.contains(int(s), 0.5 * (piece.t0 + piece.t1)))
+              piece.size = h_corner;
             outer.pieces.push_back(piece);
           }
       }

@@ -24,6 +24,10 @@ namespace gearfem::mesh
     double h_contact        = 0.25e-3; ///< element size on the drive flanks and tips of the fine teeth [m]; 0: m_n/30
     double h_fillet         = 0.25e-3; ///< element size on the fillets and root of the fine teeth [m]
     double h_coast          = 0;       ///< size on the coast flank and coast tip rounding of the fine teeth [m]; 0: h_fillet
+    /// Size at the sharp drive tip corners of the fine teeth [m]: on the last 2 h_contact of
+    /// the drive flank and of the tip land before the corner, where a corner contact is
+    /// singular; 0: h_contact/4; h_corner >= h_contact: no grading.
+    double h_corner         = 0;
     double h_body           = 3e-3;    ///< largest element size inside [m]
     double h_tooth          = 0;       ///< size on the other teeth [m]; 0: min(h_body, 0.4 m)
     double growth           = 1.2;     ///< size growth ratio away from fine boundaries (> 1)
@@ -48,6 +52,9 @@ namespace gearfem::mesh
   /// when it is 0 (about 6 nodes of a quadratic mesh across a Hertz patch at a typical
   /// design stress, which keeps the STE ripple of the node-to-segment contact below 0.1 %).
   double contact_size(const GearMeshParameters &p, double module);
+  /// Element size at a sharp drive tip corner [m]: h_corner, or contact_size/4 when 0
+  /// (never above contact_size).
+  double corner_size(const GearMeshParameters &p, double module);
   /// Element size on the coast flanks of the fine teeth [m]: h_coast, or h_fillet when 0.
   double coast_size(const GearMeshParameters &p);
   /// Tooth indices (0 <= k < z) that get fine sizes.

@@ -55,6 +55,7 @@ def main():
     ap.add_argument("--base", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--h", type=float, default=0.1, help="h_contact of the main runs [mm]")
+    ap.add_argument("--gap", default=None, help="Contact/Gap (node | integrated); default: the input's")
     a = ap.parse_args()
 
     # Line-of-action points from a named run.
@@ -79,11 +80,12 @@ def main():
 
     print("runs:", flush=True)
     h1 = {"h_contact": a.h}
-    zone = {s: run(a.gearfem, a.base, a.out, f"slave{s}", {"Slave body": s, "Slave selection": "per zone"}, h1, angles)
+    g = {"Gap": a.gap} if a.gap else {}
+    zone = {s: run(a.gearfem, a.base, a.out, f"slave{s}", {"Slave body": s, "Slave selection": "per zone", **g}, h1, angles)
             for s in (1, 2)}
-    fixed = {s: run(a.gearfem, a.base, a.out, f"fixed{s}", {"Slave body": s, "Slave selection": "fixed"}, h1, corner)
+    fixed = {s: run(a.gearfem, a.base, a.out, f"fixed{s}", {"Slave body": s, "Slave selection": "fixed", **g}, h1, corner)
              for s in (1, 2)}
-    fine = run(a.gearfem, a.base, a.out, "h005", {"Slave body": 1}, {"h_contact": a.h / 2, "h_coast": 0.1}, trans)
+    fine = run(a.gearfem, a.base, a.out, "h005", {"Slave body": 1, **g}, {"h_contact": a.h / 2, "h_coast": 0.1}, trans)
 
     fails = []
     lines = []

@@ -1,0 +1,141 @@
+// Active-set and semismooth Newton solvers of the contact complementarity problem.
+#include "contact/ncp.h"
+
+#include <set>
+
+namespace gearfem::contact
+{
+  /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
+  /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
+  /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
+  NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                      const Eigen::VectorXd &ghat, Control control, double value, double q0,
+                      const Eigen::VectorXd &lambda0, int max_iterations)
+  {
+    const int m = int(W.rows());
+    NcpResult r;
+    r.q = control == Control::displacement ? value : q0;
+    r.lambda = Eigen::VectorXd::Zero(m);
+    r.gap    = ghat + a * r.q;
+    std::vector<char> active(m, 0);
+    bool any = false;
+    for (int k = 0; k < m; ++k)
+      if (lambda0.size() == m && lambda0[k] > 0)
+        active[k] = 1, any = true;
+    if (!any)
+      {
+        if (control == Control::load)
+          {
+            // The node that closes first as q grows.
+            int best = -1;
+            double qmin = 1e300;
+            for (int k = 0; k < m; ++k)
+              if (a[k] < 0 && ghat[k] / -a[k] < qmin)
+                qmin = ghat[k] / -a[k], best = k;
+            if (best >= 0)
+              active[best] = 1;
+          }
+        else
+          for (int k = 0; k < m; ++k)
+            active[k] = r.gap[k] < 0;
+      }
+    std::set<std::vector<char>> seen;
+    for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations)
+      {
+        std::vector<int> A;
+        for (int k = 0; k < m; ++k)
+          if (active[k])
+            A.push_back(k);
+        const int n = int(A.size());
+        r.lambda.setZero();
+        if (control == Control::load)
+          {
+            if (n == 0)
+              {
+                r.why = "no slave node can close its gap as the drive advances (no contact)";
+                return r;
+              }
+            Eigen::MatrixXd K(n + 1, n + 1);
+            Eigen::VectorXd rhs(n + 1);
+            for (int i = 0; i < n; ++i)
+              {
+                for (int j = 0; j < n; ++j)
+                  K(i, j) = W(A[i], A[j]);
+                K(i, i) += D[A[i]];
+                K(i, n) = K(n, i) = a[A[i]];
+                rhs[i] = -ghat[A[i]];
+              }
+            K(n, n) = 0;
+            rhs[n]  = -value;
+            const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
+            if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
+              {
+                r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
+                return r;
+              }
+            for (int i = 0; i < n; ++i)
+              r.lambda[A[i]] = x[i];
+            r.q = x[n];
+          }
+        else if (n > 0)
+          {
+            Eigen::MatrixXd K(n, n);
+            Eigen::VectorXd rhs(n);
+            for (int i = 0; i < n; ++i)
+              {
+                for (int j = 0; j < n; ++j)
+                  K(i, j) = W(A[i], A[j]);
+                K(i, i) += D[A[i]];
+                rhs[i] = -ghat[A[i]] - a[A[i]] * r.q;
+              }
+            const Eigen::VectorXd x = K.ldlt().solve(rhs);
+            for (int i = 0; i < n; ++i)
+              r.lambda[A[i]] = x[i];
+          }
+        r.gap = ghat + a * r.q + W * r.lambda;
+        std::vector<char> next(m, 0);
+        for (int k = 0; k < m; ++k)
+          {
+            const double c = 1.0 / W(k, k);
+            next[k]        = r.lambda[k] - c * r.gap[k] > 0;
+          }
+        if (next == active)
+          {
+            r.ok     = true;
+            r.active = active;
+            double num = 0, den = 0;
+            for (int k = 0; k < m; ++k)
+              {
+                const double c  = 1.0 / W(k, k);
+                const double gk = r.gap[k] + D[k] * r.lambda[k];
+                const double v  = std::min(r.lambda[k], c * gk);
+                num += v * v;
+                den += r.lambda[k] * r.lambda[k];
+              }
+            r.complementarity = den > 0 ? std::sqrt(num / den) : 0.0;
+            if (n > 0)
+              {
+                Eigen::MatrixXd K(n, n);
+                Eigen::VectorXd aa(n);
+                for (int i = 0; i < n; ++i)
+                  {
+                    for (int j = 0; j < n; ++j)
+                      K(i, j) = W(A[i], A[j]);
+                    K(i, i) += D[A[i]];
+                    aa[i] = a[A[i]];
+                  }
+                r.tangent = aa.dot(K.ldlt().solve(aa));
+              }
+            return r;
+          }
+        if (!seen.insert(active).second)
+          {
+            r.why = "the active set cycles";
+            return r;
+          }
+        active = next;
+      }
+    r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
+    return r;
+  }
+} // namespace gearfem::contact

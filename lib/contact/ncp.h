@@ -1,0 +1,33 @@
+#pragma once
+// The linear complementarity problem of frictionless contact on a fixed linearisation
+// g = ghat + a q + W lambda (TwoBodyContact): primal-dual active set for Lagrange
+// multipliers (D = 0; Hintermueller, Ito & Kunisch 2002, SIAM J. Optim. 13(3)) and the
+// semismooth Newton of the nodal penalty (D = 1/eps), with the drive coordinate q as an
+// extra unknown under load control. Dense: the operator lives on the contact nodes only.
+#include "contact/two_body.h"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace gearfem::contact
+{
+  /// Result of the complementarity solve on a fixed linearisation.
+  struct NcpResult
+  {
+    bool ok = false;
+    std::string why;
+    Eigen::VectorXd lambda, gap;
+    double q = 0, tangent = 0, complementarity = 0;
+    int iterations = 0;
+    std::vector<char> active;
+  };
+
+  /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
+  /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
+  /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
+  NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                      const Eigen::VectorXd &ghat, Control control, double value, double q0,
+                      const Eigen::VectorXd &lambda0, int max_iterations);
+} // namespace gearfem::contact
