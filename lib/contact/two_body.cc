@@ -295,8 +295,12 @@ namespace gearfem::contact
     if (cS.kink[c.node])
       return false; // a corner is a point contact: nodal gap
     const geometry::Placement PS = placed(scene, S, q);
-    // Gauss samples of each face around the node (once per face and search): 4 points on
-    // each sub-segment between consecutive face nodes, where the hats are linear.
+    // Gauss samples of each face around the node (once per face and search): 2 points on
+    // each sub-segment between consecutive face nodes, where the hats are linear (hat times
+    // a quadratic gap is cubic: 2-point Gauss is exact; 4 points gave the same STE to
+    // 1e-4 at twice the projections).
+    constexpr int ng = 2;
+    constexpr double gx[ng] = {0.2113248654051871, 0.7886751345948129}, gw[ng] = {0.5, 0.5};
     for (const int f : cS.node_faces[c.node])
       {
         if (face_sample[f] != -1)
@@ -306,15 +310,15 @@ namespace gearfem::contact
         const int first  = int(samples.size());
         bool ok          = true;
         for (std::size_t l = 0; l + 1 < face.nodes.size() && ok; ++l)
-          for (int k = 0; k < 4 && ok; ++k)
+          for (int k = 0; k < ng && ok; ++k)
             {
               FaceSample sm;
               sm.sub         = int(l);
-              sm.eta         = gauss4_x[k];
+              sm.eta         = gx[k];
               const double x = face.xi[l] + sm.eta * (face.xi[l + 1] - face.xi[l]);
               const double t = face.t_lo + x * (face.t_hi - face.t_lo);
               sm.slave_face  = ss.face_at(face.piece, t, sm.slave_shape);
-              sm.ds = pc.curve.d1(t).norm() * (face.t_hi - face.t_lo) * (face.xi[l + 1] - face.xi[l]) * gauss4_w[k];
+              sm.ds = pc.curve.d1(t).norm() * (face.t_hi - face.t_lo) * (face.xi[l + 1] - face.xi[l]) * gw[k];
               sm.gp.x       = pc.curve.point(t);
               const Vec2 us = interpolate(S, sm.slave_face, sm.slave_shape);
               const Vec2 xs = PS.apply(sm.gp.x) + PS.apply_vector(us);
@@ -334,7 +338,7 @@ namespace gearfem::contact
           }
         const auto &face = ss.faces()[f];
         const int j = int(std::find(face.nodes.begin(), face.nodes.end(), c.node) - face.nodes.begin());
-        const int n = 4 * (int(face.nodes.size()) - 1);
+        const int n = ng * (int(face.nodes.size()) - 1);
         for (int i = face_sample[f]; i < face_sample[f] + n; ++i)
           {
             const auto &sm   = samples[i];
