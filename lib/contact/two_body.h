@@ -8,7 +8,8 @@
 // Formulation (node-to-segment, or with ContactOptions::gap = integrated its
 // segment-to-segment variant where each slave node's gap is weighted over its slave faces;
 // Wriggers, Computational Contact Mechanics, 2nd ed. 2006, ch. 4-6; piecewise-linear
-// weights on quadratic faces, as quadratic mortar methods use for positive weights). Either body may carry slave nodes: the Scene says, per body, which surface nodes
+// weights on quadratic faces, as quadratic mortar methods use for positive weights).
+// Either body may carry slave nodes: the Scene says, per body, which surface nodes
 // are slaves at this configuration (a gear pair makes the owner of a tip corner the slave
 // of that tooth pair, see GearContactModel); each slave node s is checked against the
 // exact curves of the other body (the master) plus its displacement interpolated by the
