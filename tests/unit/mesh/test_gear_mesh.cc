@@ -118,3 +118,25 @@ TEST(GearMesh, BadInput)
   p.fine_teeth    = "0, a";
   EXPECT_THROW(mesh::gear_domain(tooth, p), InputError);
 }
+
+// A fine contact mesh (m/40) with a coarse coast flank (h_coast / h_contact = 3.3) on the
+// Parker gear (z 50, m 3, bore 25 mm). Before the coast-corner transition, gmsh's Blossom
+// recombination left two triangles at each fine coast tip corner and the mesher fell back
+// to subdivision (40 s per gear, angles down to 7 deg). Reference: the quality of the same
+// gear at h_coast = 0.15 mm, which meshes without the transition (angles >= 32 deg).
+TEST(GearMesh, FineContactCoarseCoastRecombines)
+{
+  const auto tooth = make_tooth(50);
+  mesh::GearMeshParameters p;
+  p.h_contact   = 0.075e-3;
+  p.h_coast     = 0.25e-3;
+  p.bore_radius = 25e-3;
+  const auto m  = mesh::mesh_gear(tooth, p);
+  const auto q  = mesh::quality(m);
+  EXPECT_FALSE(m.subdivided);
+  EXPECT_EQ(q.n_inverted, 0u);
+  EXPECT_GT(q.min_angle, 25.0);
+  std::cout << "Parker gear at h_contact m/40: " << m.cells.size() << " cells, angles "
+            << q.min_angle << "-" << q.max_angle << " deg, meshed in " << m.mesh_seconds << " s"
+            << std::endl;
+}
