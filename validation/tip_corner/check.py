@@ -54,7 +54,7 @@ def main():
     ap.add_argument("--gearfem", required=True)
     ap.add_argument("--base", required=True)
     ap.add_argument("--out", required=True)
-    ap.add_argument("--h", type=float, default=0.1, help="h_contact of the main runs [mm]")
+    ap.add_argument("--h", type=float, default=0.075, help="h_contact of the main runs [mm] (m/40; see README.md)")
     ap.add_argument("--gap", default=None, help="Contact/Gap (node | integrated); default: the input's")
     a = ap.parse_args()
 
