@@ -108,7 +108,7 @@ namespace gearfem::contact
 
   GearContactModel::GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mp[2],
                                      const fem::Elasticity material[2], const fem::FeOptions &fe,
-                                     const ContactOptions &options)
+                                     const ContactOptions &options, const geometry::GearPair *mesh_pair)
     : pair_(&pair)
     , options_(options)
     , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
@@ -116,7 +116,7 @@ namespace gearfem::contact
     options_.validate();
     std::array<GearBody, 2> bodies;
     for (int i = 0; i < 2; ++i)
-      bodies[i] = build_gear_body(pair, i + 1, mp[i], material[i], fe, &timer_);
+      bodies[i] = build_gear_body(mesh_pair ? *mesh_pair : pair, i + 1, mp[i], material[i], fe, &timer_);
     set_up_contact(std::move(bodies));
   }
 
@@ -160,6 +160,15 @@ namespace gearfem::contact
     Drive drive;
     drive.kind = Drive::Kind::rotation;
     solver_    = std::make_unique<TwoBodyContact>(*surfaces_[0], *surfaces_[1], options_, drive);
+    if (options_.micro_geometry_as_gap)
+      for (int i = 1; i <= 2; ++i)
+        if (pair.gear(i).parameters().relief.kind != geometry::TipRelief::Kind::none)
+          {
+            // The relief is a function of the radius (docs/geometry.md); the body frame is
+            // centred on the gear axis.
+            const geometry::ToothProfile *tooth = &pair.gear(i);
+            solver_->set_gap_modification(i, [tooth](const Vec2 &x) { return tooth->relief_at_radius(x.norm()); });
+          }
   }
 
   GearContactModel::~GearContactModel() = default;

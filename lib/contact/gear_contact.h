@@ -62,12 +62,17 @@ namespace gearfem::contact
     /// surfaces (drive flank, tip rounding and tip of the fine teeth on the slave side, plus
     /// the drive fillet on the master side, for tip-to-fillet corner contact under heavy
     /// load) and the two-body solver.
+    /// With `options.micro_geometry_as_gap`, the tip reliefs of `pair` are applied as
+    /// initial separations (TwoBodyContact::set_gap_modification), so the bodies must be
+    /// meshed from the unmodified gears (unmodified_pair).
     GearContactModel(const geometry::GearPair &pair, std::array<GearBody, 2> bodies,
                      const ContactOptions &options);
     /// Build both bodies (mesh parameters per gear) in this model's timer, then as above.
+    /// `mesh_pair` (may be null: `pair`) is the pair whose gears are meshed: the unmodified
+    /// pair when `options.micro_geometry_as_gap`.
     GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mesh[2],
                      const fem::Elasticity material[2], const fem::FeOptions &fe,
-                     const ContactOptions &options);
+                     const ContactOptions &options, const geometry::GearPair *mesh_pair = nullptr);
     ~GearContactModel();
 
     /// Solve position phi1 [rad] at pinion torque T1 [N m] (> 0), warm-started from the

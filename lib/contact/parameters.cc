@@ -65,6 +65,12 @@ namespace gearfem::contact
                       "them (slave-independent and smooth STE on coarse contact meshes); sharp "
                       "slave corners keep the nodal gap (point contact). node: node-to-segment "
                       "collocation at the slave nodes (docs/contact.md). Units: none.");
+    prm.declare_entry("Micro-geometry", "geometry", Selection("geometry|gap"),
+                      "How tip reliefs (Gear i/Tip relief) enter the contact. geometry: the relieved "
+                      "profiles are meshed (exact). gap: the unmodified gears are meshed and each "
+                      "relief is an initial separation along the normal, as LTCA codes do; designs "
+                      "that differ only in micro-geometry then share one mesh and factorisation "
+                      "(docs/contact.md). Units: none.");
     prm.declare_entry("Friction coefficient", "0", Double(),
                       "Coulomb friction. Only frictionless contact (0) is implemented. Units: none. "
                       "Allowed: 0.");
@@ -86,6 +92,7 @@ namespace gearfem::contact
     o.slave = slave == "auto" ? (E2 < E1 ? 2 : 1) : std::stoi(slave);
     o.per_zone_slaves           = prm.get("Slave selection") == "per zone";
     o.gap                       = gap_rule_from_string(prm.get("Gap"));
+    o.micro_geometry_as_gap     = prm.get("Micro-geometry") == "gap";
     const double mu = params::get_double(prm, "Friction coefficient");
     prm.leave_subsection();
     if (mu != 0.0)
@@ -228,6 +235,13 @@ namespace gearfem::contact
       }
     in.fe      = fem::parse_fe_parameters(prm);
     in.contact = parse_contact_parameters(prm, in.material[0].youngs_modulus, in.material[1].youngs_modulus);
+    using Relief = geometry::TipRelief::Kind;
+    if (in.contact.micro_geometry_as_gap && (gi.gear1.relief.kind != Relief::none || gi.gear2.relief.kind != Relief::none))
+      {
+        geometry::GeometryInput plain = gi;
+        plain.gear1.relief = plain.gear2.relief = geometry::TipRelief();
+        in.unmodified_pair = std::make_unique<geometry::GearPair>(geometry::build_pair(plain));
+      }
     in.solve   = parse_solve_parameters(prm);
     (void)in.positions(); // checks the position list
     check_small_strain(*in.pair, pm, in.solve.torques);
@@ -267,6 +281,6 @@ namespace gearfem::contact
 
   std::unique_ptr<GearContactModel> GearContactInput::model() const
   {
-    return std::make_unique<GearContactModel>(*pair, mesh, material, fe, contact);
+    return std::make_unique<GearContactModel>(*pair, mesh, material, fe, contact, unmodified_pair.get());
   }
 } // namespace gearfem::contact

@@ -52,6 +52,9 @@ namespace gearfem::contact
   struct GearContactInput
   {
     std::unique_ptr<geometry::GearPair> pair;
+    /// `Contact/Micro-geometry = gap` with a tip relief: the gears without relief, which are
+    /// meshed (null otherwise: `pair` is meshed).
+    std::unique_ptr<geometry::GearPair> unmodified_pair;
     mesh::GearMeshParameters mesh[2];
     fem::Elasticity material[2];
     fem::FeOptions fe;

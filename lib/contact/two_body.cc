@@ -255,7 +255,15 @@ namespace gearfem::contact
     return r;
   }
 
-  bool TwoBodyContact::project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out) const
+  void TwoBodyContact::set_gap_modification(int body, GapModification f)
+  {
+    if (body != 1 && body != 2)
+      throw InputError("gap modification body", std::to_string(body), "1 | 2");
+    gap_mod_[body - 1] = std::move(f);
+  }
+
+  bool TwoBodyContact::project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out,
+                                     double slave_offset) const
   {
     const ContactSurface &ms = surface(M);
     const auto &use          = scene.master_pieces[M - 1];
@@ -279,7 +287,7 @@ namespace gearfem::contact
       }
     out.face      = ms.face_at(out.pr.piece, out.pr.t, out.shape);
     const Vec2 um = interpolate(M, out.face, out.shape);
-    out.g         = (y - out.pr.point - um).dot(out.pr.normal);
+    out.g         = (y - out.pr.point - um).dot(out.pr.normal) + slave_offset + gap_offset(M, out.pr.point);
     if (std::abs(out.g) > options_.search_distance)
       return false;
     out.n_pair = PM.apply_vector(out.pr.normal);
@@ -322,7 +330,8 @@ namespace gearfem::contact
               sm.gp.x       = pc.curve.point(t);
               const Vec2 us = interpolate(S, sm.slave_face, sm.slave_shape);
               const Vec2 xs = PS.apply(sm.gp.x) + PS.apply_vector(us);
-              ok = sm.slave_face == f && project_point(scene, M, xs, q, sm.gp) && !sm.gp.pr.corner;
+              ok = sm.slave_face == f && project_point(scene, M, xs, q, sm.gp, gap_offset(S, sm.gp.x)) &&
+                   !sm.gp.pr.corner;
               samples.push_back(std::move(sm));
             }
         face_sample[f] = ok ? first : -2;
@@ -374,7 +383,7 @@ namespace gearfem::contact
         const Vec2 xs = P[S - 1].apply(nd.x) + P[S - 1].apply_vector(displacement(S, i));
         Candidate c;
         c.S = S, c.node = i;
-        if (!project_point(scene, 3 - S, xs, q, c.at))
+        if (!project_point(scene, 3 - S, xs, q, c.at, gap_offset(S, nd.x)))
           continue;
         c.at.x = nd.x;
         c.g    = c.at.g;

@@ -40,6 +40,7 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -93,6 +94,10 @@ namespace gearfem::contact
     bool per_zone_slaves = true;
     /// Nodal or integrated (segment-to-segment) gaps.
     GapRule gap = GapRule::integrated;
+    /// GearContactModel: profile modifications (tip relief) meshed as geometry (false), or
+    /// applied as an initial normal separation on the unmodified mesh (true; designs that
+    /// differ only in micro-geometry then share one mesh and factorisation).
+    bool micro_geometry_as_gap = false;
     /// Throws InputError naming the `Contact` entry.
     void validate() const;
   };
@@ -166,6 +171,10 @@ namespace gearfem::contact
     load          ///< generalised force given, q unknown
   };
 
+  /// Material removed from a body's surface along its normal at a point of its undeformed
+  /// surface (body frame) [m]: a profile modification applied as an initial separation.
+  using GapModification = std::function<double(const Vec2 &x_body)>;
+
   class TwoBodyContact
   {
   public:
@@ -184,6 +193,9 @@ namespace gearfem::contact
     std::size_t cached_columns(int body) const;
     /// Rigid placement of body `body` at drive coordinate q.
     geometry::Placement placed(const Scene &scene, int body, double q) const;
+    /// Add `f` (material removed, >= 0 where the surface is relieved) of body `body` to every
+    /// gap measured at its points, as slave point or as master projection. Null: none.
+    void set_gap_modification(int body, GapModification f);
 
   private:
     /// One point of a slave surface (a node, or a Gauss point of a slave face) projected
@@ -247,7 +259,11 @@ namespace gearfem::contact
     SearchResult search(const Scene &scene, double q) const;
     /// Project slave point xs (pair frame) onto body M's displaced master (fixed point on the
     /// master displacement). false when nothing lies within the search distance.
-    bool project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out) const;
+    /// `slave_offset`: the slave body's gap modification at the point [m].
+    bool project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out,
+                       double slave_offset = 0.0) const;
+    /// Gap modification of body `body` at body-frame point x (0 without one).
+    double gap_offset(int body, const Vec2 &x) const { return gap_mod_[body - 1] ? gap_mod_[body - 1](x) : 0.0; }
     /// Gauss samples of the slave faces around candidate c, and its integrated gap terms;
     /// false (nodal gap kept) where a sample has no smooth master point.
     bool integrate_gap(const Scene &scene, double q, Candidate &c, std::vector<FaceSample> &samples,
@@ -268,6 +284,7 @@ namespace gearfem::contact
     const ContactSurface *s1_, *s2_;
     ContactOptions options_;
     Drive drive_;
+    GapModification gap_mod_[2];
     BodyCache cache_[2];
   };
 } // namespace gearfem::contact
