@@ -28,6 +28,18 @@ namespace gearfem::commands
     bool validate_only = false;
     /// `--resume`: continue an interrupted run from the journal in output_dir (solve).
     bool resume = false;
+    /// `--merge` (batch): aggregate the job records in output_dir, run nothing.
+    bool merge = false;
+    /// `--slice K/N` (batch): run only the designs i with i % N == K - 1.
+    int slice = 1, slices = 1;
+    /// What the command reports back to the CLI (a command may change it; the CLI starts
+    /// it at 0 / true).
+    struct Outcome
+    {
+      int exit_status = 0;      ///< returned by the CLI when the command returns normally
+      bool write_record = true; ///< false: no run.json/input.prm and no final line (MPI ranks > 0)
+    };
+    Outcome *outcome = nullptr;
   };
 
   struct Command
