@@ -195,6 +195,8 @@ namespace gearfem::batch
     const auto t0 = std::chrono::steady_clock::now();
     BatchOutcome r;
     r.designs       = study.designs.designs.size();
+    if (o.merge_only)
+      r.mine = r.designs;
     const auto root = o.output_dir / jobs_folder;
     std::vector<int> todo;
     std::ostream *out = mpi.rank() == 0 ? o.out : nullptr;
@@ -237,26 +239,38 @@ namespace gearfem::batch
           plan_error   = 1;
           plan_message = e.what();
         }
-    if (mpi.size() > 1 && mpi.broadcast(plan_error) != 0 && mpi.rank() != 0)
-      return r; // rank 0 throws below; the workers have nothing to do
+    if (mpi.size() > 1)
+      plan_error = mpi.broadcast(plan_error);
+    if (plan_error && mpi.rank() != 0)
+      {
+        r.exit_status = 2; // rank 0 reports the error
+        return r;
+      }
     if (plan_error)
       throw InputError("gearfem batch: planning the jobs failed: " + plan_message);
 
+    // From here on every rank reaches the final broadcast, whatever fails on rank 0.
+    std::exception_ptr error;
     if (!o.merge_only)
       {
         if (mpi.rank() == 0)
-          {
-            Reporter reporter(out, study, root, todo.size());
-            manage(study, mpi, root, todo, reporter);
-            r.ran    = todo.size();
-            r.failed = reporter.failed();
-          }
+          try
+            {
+              Reporter reporter(out, study, root, todo.size());
+              manage(study, mpi, root, todo, reporter);
+              r.ran = todo.size();
+            }
+          catch (...)
+            {
+              error = std::current_exception();
+            }
         else
           work(study, root);
       }
 
     int status = 0;
-    if (mpi.rank() == 0)
+    if (mpi.rank() == 0 && !error)
+      try
       {
         const auto outcomes = collect_outcomes(study, root);
         r.failed            = 0; // counted from the records: also the invalid and earlier ones
@@ -278,7 +292,15 @@ namespace gearfem::batch
           }
         status = r.failed + r.not_run > 0 ? exit_some_failed : 0;
       }
+      catch (...)
+        {
+          error = std::current_exception();
+        }
+    if (error)
+      status = 1;
     r.exit_status = mpi.size() > 1 ? mpi.broadcast(status) : status;
+    if (error)
+      std::rethrow_exception(error);
     r.seconds     = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
   }

@@ -7,10 +7,13 @@
 #include "post/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -72,6 +75,23 @@ namespace gearfem::batch
         }
       for (std::size_t k = 0; k < sections.size(); ++k)
         prm.leave_subsection();
+    }
+
+    /// ParameterHandler's private name mangling (every character but [a-zA-Z0-9] as _XX),
+    /// for a JSON tree that keeps mangled names.
+    std::string mangle(const std::string &s)
+    {
+      std::string out;
+      for (const char c : s)
+        if (std::isalnum(static_cast<unsigned char>(c)))
+          out += c;
+        else
+          {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "_%02x", static_cast<unsigned char>(c));
+            out += buf;
+          }
+      return out;
     }
 
     void declare_case(dealii::ParameterHandler &prm)
@@ -223,14 +243,14 @@ namespace gearfem::batch
       {
         auto it = node->find(name);
         if (it == node->not_found())
-          it = node->find(dealii::ParameterHandler::mangle(name));
+          it = node->find(mangle(name));
         if (it == node->not_found())
           return "";
         node = &it->second;
       }
     auto it = node->find(entry);
     if (it == node->not_found())
-      it = node->find(dealii::ParameterHandler::mangle(entry));
+      it = node->find(mangle(entry));
     if (it == node->not_found())
       return "";
     const std::string doc = it->second.get<std::string>("documentation", "");
@@ -258,6 +278,14 @@ namespace gearfem::batch
       catch (const InputError &e)
         {
           bad.emplace_back(i, e.what());
+        }
+      catch (const SolverError &e)
+        {
+          bad.emplace_back(i, e.what());
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          bad.emplace_back(i, exception_text(e));
         }
     return bad;
   }

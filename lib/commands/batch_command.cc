@@ -15,6 +15,7 @@
 
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace gearfem::commands
@@ -44,48 +45,37 @@ namespace gearfem::commands
       throw InputError(m.str());
     }
 
-    void run_study(dealii::ParameterHandler &prm, const RunContext &ctx, const batch::MpiSession &mpi,
-                   std::ostream *out)
+    /// Read the study and check it (all designs with --validate). Every rank reads the same
+    /// files and finds the same error: only rank 0 reports it (InputError), the others
+    /// return nullopt with exit status 2.
+    std::optional<batch::Study> load(dealii::ParameterHandler &prm, const RunContext &ctx,
+                                     const batch::MpiSession &mpi, std::ostream *out)
     {
-      const batch::Study study = batch::load_study(prm, ctx.input_file);
-      if (out)
+      try
         {
-          *out << "batch: " << study.designs.designs.size() << " designs from " << study.source_name << ", "
-               << study.designs.paths.size() << " parameter path" << (study.designs.paths.size() == 1 ? "" : "s")
-               << ":";
-          for (const auto &p : study.designs.paths)
-            *out << " '" << p << "'";
-          *out << std::endl;
+          batch::Study study = batch::load_study(prm, ctx.input_file);
+          if (out)
+            {
+              *out << "batch: " << study.designs.designs.size() << " designs from " << study.source_name << ", "
+                   << study.designs.paths.size() << " parameter path"
+                   << (study.designs.paths.size() == 1 ? "" : "s") << ":";
+              for (const auto &p : study.designs.paths)
+                *out << " '" << p << "'";
+              *out << std::endl;
+            }
+          if (ctx.validate_only)
+            validate_designs(study, out);
+          return study;
         }
-      if (ctx.validate_only)
+      catch (const InputError &)
         {
-          validate_designs(study, out);
-          return;
-        }
-      if (mpi.rank() == 0 && study.batch.source == batch::BatchParameters::Source::table && !ctx.merge)
-        {
-          std::ifstream in(study.source_name.substr(std::string("design table ").size()));
-          std::ostringstream s;
-          s << in.rdbuf();
-          write_file_atomically(ctx.output_dir / "design_table.csv", s.str());
-        }
-      batch::BatchOptions opt;
-      opt.output_dir = ctx.output_dir;
-      opt.out        = out;
-      opt.slice = ctx.slice, opt.slices = ctx.slices;
-      opt.merge_only = ctx.merge;
-      const batch::BatchOutcome r = batch::run_batch(study, mpi, opt);
-      ctx.outcome->exit_status    = r.exit_status;
-      if (out)
-        {
-          *out << "batch: " << r.mine << " designs" << (ctx.merge ? " merged" : "") << ": " << r.skipped
-               << " finished before, " << r.ran << " run now, " << r.failed << " failed (" << r.invalid
-               << " invalid), " << r.not_run << " not run; " << std::fixed << std::setprecision(1) << r.seconds
-               << " s" << std::endl;
-          if (r.exit_status != 0)
-            *out << "batch: exit status " << r.exit_status
-                 << ": some designs failed or did not run (status column of batch.csv); every finished job is kept"
-                 << std::endl;
+          mpi.barrier(); // every rank has created (and not yet written) the output folder
+          if (mpi.rank() != 0)
+            {
+              ctx.outcome->exit_status = 2;
+              return std::nullopt;
+            }
+          throw;
         }
     }
 
@@ -97,20 +87,33 @@ namespace gearfem::commands
       std::ostream *out = mpi.rank() == 0 ? ctx.out : nullptr;
       if (mpi.rank() != 0)
         ctx.outcome->write_record = false; // rank 0 writes run.json and prints
-      try
+      const auto study = load(prm, ctx, mpi, out);
+      if (!study || ctx.validate_only)
+        return;
+      if (mpi.rank() == 0 && study->batch.source == batch::BatchParameters::Source::table && !ctx.merge)
         {
-          run_study(prm, ctx, mpi, out);
+          std::ifstream in(study->source_name.substr(std::string("design table ").size()));
+          std::ostringstream s;
+          s << in.rdbuf();
+          write_file_atomically(ctx.output_dir / "design_table.csv", s.str());
         }
-      catch (const InputError &)
+      batch::BatchOptions opt;
+      opt.output_dir = ctx.output_dir;
+      opt.out        = out;
+      opt.slice = ctx.slice, opt.slices = ctx.slices;
+      opt.merge_only = ctx.merge;
+      const batch::BatchOutcome r = batch::run_batch(*study, mpi, opt);
+      ctx.outcome->exit_status    = r.exit_status;
+      if (out)
         {
-          // Every rank reads the same files and finds the same error: only rank 0 reports it.
-          mpi.barrier();
-          if (mpi.rank() != 0)
-            {
-              ctx.outcome->exit_status = 2;
-              return;
-            }
-          throw;
+          *out << "batch: " << r.mine << " designs" << (ctx.merge ? " merged" : "") << ": " << r.skipped
+               << " finished before, " << r.ran << " run now, " << r.failed << " failed (" << r.invalid
+               << " invalid), " << r.not_run << " not run; " << std::fixed << std::setprecision(1) << r.seconds
+               << " s" << std::endl;
+          if (r.exit_status != 0)
+            *out << "batch: exit status " << r.exit_status
+                 << ": some designs failed or did not run (status column of batch.csv); every finished job is kept"
+                 << std::endl;
         }
     }
   } // namespace
