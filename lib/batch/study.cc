@@ -71,7 +71,12 @@ namespace gearfem::batch
         {
           for (std::size_t k = 0; k < sections.size(); ++k)
             prm.leave_subsection();
-          throw InputError(where(s, path, i), value, "a value of the entry's pattern", exception_text(e));
+          const std::string text = exception_text(e);
+          if (text.find("not yet declared") != std::string::npos)
+            throw InputError(where(s, path, i), s.designs.paths[path],
+                             "the path of an entry of the case file (gearfem batch --print-parameters lists them)",
+                             "unknown parameter path: no entry '" + entry + "'");
+          throw InputError(where(s, path, i), value, "a value of the entry's pattern", text);
         }
       for (std::size_t k = 0; k < sections.size(); ++k)
         prm.leave_subsection();

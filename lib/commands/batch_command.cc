@@ -71,10 +71,8 @@ namespace gearfem::commands
         {
           mpi.barrier(); // every rank has created (and not yet written) the output folder
           if (mpi.rank() != 0)
-            {
-              ctx.outcome->exit_status = 2;
-              return std::nullopt;
-            }
+            return std::nullopt; // exit status 0: see run()
+
           throw;
         }
     }
@@ -103,7 +101,10 @@ namespace gearfem::commands
       opt.slice = ctx.slice, opt.slices = ctx.slices;
       opt.merge_only = ctx.merge;
       const batch::BatchOutcome r = batch::run_batch(*study, mpi, opt);
-      ctx.outcome->exit_status    = r.exit_status;
+      // Only rank 0's exit status carries the result (mpirun returns it). The other ranks
+      // exit with 0: mpirun aborts the whole job as soon as one rank exits non-zero, which
+      // could kill rank 0 before it has printed its message and written its records.
+      ctx.outcome->exit_status = mpi.rank() == 0 ? r.exit_status : 0;
       if (out)
         {
           *out << "batch: " << r.mine << " designs" << (ctx.merge ? " merged" : "") << ": " << r.skipped

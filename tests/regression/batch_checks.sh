@@ -104,6 +104,9 @@ PY
     ;;
   restart)
     study designs.csv
+    # 20 positions per torque (a later `set` overrides the study's 5): jobs long enough to
+    # kill the batch between two jobs.
+    printf 'subsection Solve\n  set Number of positions = 20\nend\n' >> "$work/study.prm"
     "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/kill.log" 2>&1 &
     pid=$!
     for _ in $(seq 1 2400); do
@@ -132,7 +135,7 @@ PY
     [ "$(tail -n +2 "$work/out/batch.csv" | grep -c ',ok$')" -eq 6 ] || fail "batch.csv does not hold 6 ok rows"
     # A changed design re-runs alone: change E2 of 'soft' only.
     sed -e 's/^soft,0,100$/soft,0,110/' "$data/designs.csv" > "$work/changed.csv"
-    sed -e "s|Design table = designs.csv|Design table = $work/changed.csv|" "$data/study.prm" > "$work/changed.prm"
+    sed -e "s|Design table = .*|Design table = $work/changed.csv|" "$work/study.prm" > "$work/changed.prm"
     "$gearfem" batch "$work/changed.prm" --output-dir "$work/out" > "$work/changed.log" 2>&1 ||
       { cat "$work/changed.log"; fail "batch with one changed design failed"; }
     grep -q "2 finished before (skipped)" "$work/changed.log" || { cat "$work/changed.log"; fail "the unchanged designs were not skipped"; }
@@ -155,23 +158,23 @@ for row in rows:
     st.setdefault(row[i], []).append(row)
 assert len(st["good"]) == 2 and all(x[s] == "ok" for x in st["good"]), st["good"]
 assert all(float(x[h.index("STE mean [um]")]) > 0 for x in st["good"])
-bad = st["undercut"][0][s]
-assert bad.startswith("failed: invalid design") and "Profile shift" in bad, bad
+bad = st["interfering"][0][s]
+assert bad.startswith("failed: invalid design") and "interference" in bad, bad
 nc = st["nocontact"][0][s]
 assert nc.startswith("failed: solver failure") and "no contact" in nc, nc
 # A failed design has its torques but no numbers.
-assert [x[h.index("torque [N m]")] for x in st["undercut"]] == ["100", "200"]
-assert st["undercut"][0][h.index("STE mean [um]")] == ""
-print("good: ok; undercut:", bad[:90], "...; nocontact:", nc[:70], "...")
+assert [x[h.index("torque [N m]")] for x in st["interfering"]] == ["100", "200"]
+assert st["interfering"][0][h.index("STE mean [um]")] == ""
+print("good: ok; interfering:", bad[:90], "...; nocontact:", nc[:70], "...")
 PY
     [ -s "$work/out/jobs/good/results.h5" ] || fail "the good design's results.h5 is missing"
-    grep -q "^status failed" "$work/out/jobs/undercut/job.txt" || fail "no failed record for the invalid design"
+    grep -q "^status failed" "$work/out/jobs/interfering/job.txt" || fail "no failed record for the invalid design"
     "$gearfem" batch "$work/study.prm" --validate > "$work/v.log" 2>&1
     rc=$?
     cat "$work/v.log"
     [ $rc -eq 2 ] || fail "--validate: exit status $rc (expected 2)"
     grep -q "1 of 3 designs are invalid" "$work/v.log" || fail "--validate does not count the invalid design"
-    grep -q "design undercut (row 5 of" "$work/v.log" || fail "--validate does not name the design and its row"
+    grep -q "design interfering (row 5 of" "$work/v.log" || fail "--validate does not name the design and its row"
     ;;
   bad)
     check() { # TABLE EXPECT...: exit 2, each EXPECT in stderr, no job started
