@@ -5,6 +5,8 @@
 #                                            one design equal `gearfem solve` of that design
 #                                            written by hand, and its batch.csv row equals the
 #                                            statistics computed here from that solve's sweep.csv
+#                                            (and batch.h5 equals batch.csv; slices 1/2 and 2/2
+#                                            merged by --merge equal the whole batch)
 #   batch_checks.sh restart GEARFEM SRC_DIR  a batch killed with SIGKILL after its first job,
 #                                            re-run, skips the finished job and completes
 #   batch_checks.sh failure GEARFEM SRC_DIR  an invalid design and a failing solve are recorded
@@ -100,7 +102,31 @@ for T in ("100", "200"):
     m = {r[agg["id [text]"]]: float(r[agg["STE mean [um]"]]) for r in rs if r[agg["torque [N m]"]] == T}
     assert m["soft"] > 1.2 * m["base"], m
 print("design 'soft' equals gearfem solve of its case; its batch.csv rows equal the sweep statistics")
+# 5. batch.h5 holds the same numbers as batch.csv (if h5py is there).
+try:
+    import h5py
+except ImportError:
+    sys.exit(0)
+with h5py.File(f"{w}/serial/batch.h5", "r") as f:
+    assert f.attrs["format"] in ("gearfem-batch", b"gearfem-batch")
+    g = f["batch"]
+    for h in hs:
+        name = h.replace("/", "|") if h.startswith(("Gear", "Material")) else h.replace("/", " per ")
+        v = g[name][()]
+        assert len(v) == 6, h
+        for x, r in zip(v, rs):
+            x = x.decode() if isinstance(x, bytes) else x
+            assert (x == r[hs.index(h)]) if h.endswith("[text]") else close(float(x), float(r[hs.index(h)]), 1e-9), (h, x)
+print("batch.h5 equals batch.csv")
 PY
+    # Job-array slices 1/2 and 2/2, then --merge: the same table as the whole batch.
+    "$gearfem" batch "$work/study.prm" --slice 1/2 --output-dir "$work/sliced" > "$work/s1.log" 2>&1 || { cat "$work/s1.log"; fail "slice 1/2"; }
+    [ ! -e "$work/sliced/batch.csv" ] || fail "a slice wrote batch.csv"
+    "$gearfem" batch "$work/study.prm" --slice 2/2 --output-dir "$work/sliced" > "$work/s2.log" 2>&1 || { cat "$work/s2.log"; fail "slice 2/2"; }
+    grep -q "slice 2/2 holds 1" "$work/s2.log" || fail "slice 2/2 does not hold 1 design"
+    "$gearfem" batch "$work/study.prm" --merge --output-dir "$work/sliced" > "$work/merge.log" 2>&1 || { cat "$work/merge.log"; fail "--merge"; }
+    diff <(cut -d, -f1-15,17 "$work/serial/batch.csv") <(cut -d, -f1-15,17 "$work/sliced/batch.csv") || fail "merged slices differ from the whole batch"
+    echo "slices 1/2 + 2/2 merged equal the whole batch"
     ;;
   restart)
     study designs.csv
