@@ -292,6 +292,10 @@ namespace gearfem::batch
         {
           bad.emplace_back(i, exception_text(e));
         }
+      catch (const std::exception &e) // a bug of a check: record it, do not stop the batch
+        {
+          bad.emplace_back(i, std::string("error: ") + e.what());
+        }
     return bad;
   }
 } // namespace gearfem::batch
