@@ -69,7 +69,7 @@ namespace gearfem::commands
         }
       catch (const InputError &)
         {
-          mpi.barrier(); // every rank has created (and not yet written) the output folder
+          mpi.barrier(); // every rank has found the error: nothing was created yet
           if (mpi.rank() != 0)
             return std::nullopt; // exit status 0: see run()
 
@@ -88,6 +88,9 @@ namespace gearfem::commands
       const auto study = load(prm, ctx, mpi, out);
       if (!study || ctx.validate_only)
         return;
+      if (mpi.rank() == 0)
+        std::filesystem::create_directories(ctx.output_dir);
+      mpi.barrier();
       if (mpi.rank() == 0 && study->batch.source == batch::BatchParameters::Source::table && !ctx.merge)
         {
           std::ifstream in(study->source_name.substr(std::string("design table ").size()));
@@ -139,8 +142,9 @@ namespace gearfem::commands
                     "  mpirun -np 2 gearfem batch inputs/batch_demo.prm --output-dir results/batch_demo\n"
                     "  gearfem batch inputs/batch_demo.prm --slice 1/4   (job-array task 1 of 4)\n"
                     "  gearfem batch inputs/batch_demo.prm --merge       (aggregate the slices)\n";
-    c.declare = declare;
-    c.run     = run;
+    c.declare            = declare;
+    c.run                = run;
+    c.creates_output_dir = true;
     return c;
   }
 } // namespace gearfem::commands

@@ -239,7 +239,8 @@ namespace gearfem::commands
         }
 
       const bool existed = std::filesystem::exists(ctx.output_dir);
-      std::filesystem::create_directories(ctx.output_dir);
+      if (!cmd.creates_output_dir)
+        std::filesystem::create_directories(ctx.output_dir);
       const auto t0 = std::chrono::steady_clock::now();
       try
         {

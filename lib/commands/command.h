@@ -50,6 +50,9 @@ namespace gearfem::commands
     bool needs_input = true; ///< false for commands that run without a .prm (e.g. bench analytical)
     /// false for commands that hand the .prm to a sub-command which parses it itself (bench)
     bool parse_input = true;
+    /// true: the command creates RunContext::output_dir itself (batch: rank 0 only, after
+    /// its input checks, so that MPI ranks do not race to create and remove it).
+    bool creates_output_dir = false;
     /// Declare every parameter the command reads (each module declares its own sections).
     std::function<void(dealii::ParameterHandler &)> declare;
     /// Run. Throws gearfem::InputError for bad input, gearfem::SolverError for failures.
