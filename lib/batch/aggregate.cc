@@ -123,6 +123,8 @@ namespace gearfem::batch
         const auto dir = jobs_root / study.designs.designs[i].id;
         DesignOutcome &o = out[i];
         o.record         = read_job_record(dir);
+        if (o.record)
+          o.torques = o.record->torques;
         if (!o.record)
           {
             o.status = "not run";
@@ -186,8 +188,8 @@ namespace gearfem::batch
         const bool have                  = !lines.empty();
         if (!have)
           {
-            if (o.record && !o.record->torques.empty())
-              for (const double T : o.record->torques)
+            if (!o.torques.empty())
+              for (const double T : o.torques)
                 lines.push_back(TorqueSummary{T});
             else
               lines.push_back(TorqueSummary{});

@@ -39,6 +39,7 @@ namespace gearfem::batch
     std::optional<JobRecord> record;
     std::vector<TorqueSummary> summaries;
     std::string status; ///< "ok", "failed: <message>" or "not run"
+    std::vector<double> torques; ///< the design's torques [N m]: one row each without results
   };
 
   /// Read jobs_root/<id>/job.txt and results.h5 of every design of the study.

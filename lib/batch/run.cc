@@ -1,6 +1,7 @@
 #include "batch/run.h"
 
 #include "base/errors.h"
+#include "base/number.h"
 #include "fem/direct_solver.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -272,7 +273,18 @@ namespace gearfem::batch
     if (mpi.rank() == 0 && !error)
       try
       {
-        const auto outcomes = collect_outcomes(study, root);
+        auto outcomes = collect_outcomes(study, root);
+        for (std::size_t i = 0; i < outcomes.size(); ++i)
+          if (outcomes[i].torques.empty()) // not run: its rows still name its torques
+            try
+              {
+                auto prm = design_handler(study, i);
+                prm->enter_subsection("Solve");
+                outcomes[i].torques = parse_double_list("Solve/Torques", prm->get("Torques"));
+                prm->leave_subsection();
+              }
+            catch (const std::exception &)
+              {}
         r.failed            = 0; // counted from the records: also the invalid and earlier ones
         for (std::size_t i = 0; i < outcomes.size(); ++i)
           {
