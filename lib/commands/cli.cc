@@ -2,6 +2,7 @@
 // run.json, and the mapping of errors to exit statuses (see base/errors.h).
 #include "base/atomic_file.h"
 #include "base/errors.h"
+#include "base/number.h"
 #include "commands/command.h"
 #include "params/checked.h"
 #include "gearfem/version.h"
@@ -26,12 +27,14 @@ namespace gearfem::commands
       out << "gearfem " << version_string << " (" << git_hash << ")\n"
           << "Finite-element spur-gear contact analysis.\n\n"
           << "Usage: gearfem <command> <file.prm> [--output-dir DIR] [--validate] [--resume]\n"
+          << "       gearfem batch <study.prm> [--output-dir DIR] [--validate] [--slice K/N] [--merge]\n"
           << "       gearfem <command> --print-parameters [json|prm]\n"
           << "       gearfem <command> --help\n"
           << "       gearfem --version\n\nCommands:\n";
       for (const auto &c : registry())
         out << "  " << std::left << std::setw(11) << c.name << c.summary << "\n";
-      out << "\nExit status: 0 success, 2 bad input, 3 solver failure, 1 internal error.\n";
+      out << "\nExit status: 0 success, 2 bad input, 3 solver failure, 4 batch finished with failed\n"
+             "or missing jobs (status column of batch.csv), 1 internal error.\n";
     }
 
     void declare_output(dealii::ParameterHandler &prm)
@@ -97,7 +100,9 @@ namespace gearfem::commands
     int run_command(const Command &cmd, int argc, char **argv)
     {
       RunContext ctx;
-      ctx.out = &std::cout;
+      RunContext::Outcome outcome;
+      ctx.out     = &std::cout;
+      ctx.outcome = &outcome;
       std::string print_format;
       bool print_parameters = false;
       std::string output_dir_option;
@@ -114,6 +119,8 @@ namespace gearfem::commands
                         << "  --output-dir DIR           output folder (default results/<case>)\n"
                         << "  --validate                 parse and check the input only\n"
                         << "  --resume                   continue an interrupted run (solve)\n"
+                        << "  --slice K/N                run designs K, K+N, ... only (batch)\n"
+                        << "  --merge                    aggregate finished jobs, run nothing (batch)\n"
                         << "  --print-parameters [json|prm]  all parameters with defaults\n";
               return 0;
             }
@@ -121,6 +128,17 @@ namespace gearfem::commands
             ctx.validate_only = true;
           else if (a == "--resume")
             ctx.resume = true;
+          else if (a == "--merge")
+            ctx.merge = true;
+          else if (a == "--slice")
+            {
+              const std::string v = i + 1 < argc ? argv[++i] : "(missing)";
+              const auto slash    = v.find('/');
+              if (slash == std::string::npos)
+                throw InputError("--slice", v, "K/N with 1 <= K <= N");
+              ctx.slices = parse_int("--slice", v.substr(slash + 1), 1, 1000000);
+              ctx.slice  = parse_int("--slice", v.substr(0, slash), 1, ctx.slices);
+            }
           else if (a == "--print-parameters")
             {
               print_parameters = true;
@@ -138,13 +156,15 @@ namespace gearfem::commands
             }
           else if (a.size() > 1 && a[0] == '-')
             throw InputError("command-line option", a,
-                             "--output-dir, --validate, --resume, --print-parameters, --help");
+                             "--output-dir, --validate, --resume, --slice, --merge, --print-parameters, --help");
           else
             ctx.arguments.push_back(a);
         }
 
       if (ctx.resume && cmd.name != "solve")
         throw InputError("--resume", cmd.name, "the solve command", "only `gearfem solve` keeps a journal to resume");
+      if ((ctx.merge || ctx.slices > 1) && cmd.name != "batch")
+        throw InputError(ctx.merge ? "--merge" : "--slice", cmd.name, "the batch command");
       dealii::ParameterHandler prm;
       cmd.declare(prm);
       declare_output(prm);
@@ -213,12 +233,14 @@ namespace gearfem::commands
       if (ctx.validate_only)
         {
           cmd.run(prm, ctx);
-          std::cout << "input is valid: " << ctx.input_file.string() << std::endl;
-          return 0;
+          if (outcome.write_record)
+            std::cout << "input is valid: " << ctx.input_file.string() << std::endl;
+          return outcome.exit_status;
         }
 
       const bool existed = std::filesystem::exists(ctx.output_dir);
-      std::filesystem::create_directories(ctx.output_dir);
+      if (!cmd.creates_output_dir)
+        std::filesystem::create_directories(ctx.output_dir);
       const auto t0 = std::chrono::steady_clock::now();
       try
         {
@@ -234,10 +256,12 @@ namespace gearfem::commands
         }
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+      if (!outcome.write_record)
+        return outcome.exit_status;
       write_run_record(cmd, ctx, wall);
       std::cout << "results in " << ctx.output_dir.string() << " (" << std::fixed
                 << std::setprecision(2) << wall << " s)" << std::endl;
-      return 0;
+      return outcome.exit_status;
     }
   } // namespace
 

@@ -28,6 +28,18 @@ namespace gearfem::commands
     bool validate_only = false;
     /// `--resume`: continue an interrupted run from the journal in output_dir (solve).
     bool resume = false;
+    /// `--merge` (batch): aggregate the job records in output_dir, run nothing.
+    bool merge = false;
+    /// `--slice K/N` (batch): run only the designs i with i % N == K - 1.
+    int slice = 1, slices = 1;
+    /// What the command reports back to the CLI (a command may change it; the CLI starts
+    /// it at 0 / true).
+    struct Outcome
+    {
+      int exit_status = 0;      ///< returned by the CLI when the command returns normally
+      bool write_record = true; ///< false: no run.json/input.prm and no final line (MPI ranks > 0)
+    };
+    Outcome *outcome = nullptr;
   };
 
   struct Command
@@ -38,6 +50,9 @@ namespace gearfem::commands
     bool needs_input = true; ///< false for commands that run without a .prm (e.g. bench analytical)
     /// false for commands that hand the .prm to a sub-command which parses it itself (bench)
     bool parse_input = true;
+    /// true: the command creates RunContext::output_dir itself (batch: rank 0 only, after
+    /// its input checks, so that MPI ranks do not race to create and remove it).
+    bool creates_output_dir = false;
     /// Declare every parameter the command reads (each module declares its own sections).
     std::function<void(dealii::ParameterHandler &)> declare;
     /// Run. Throws gearfem::InputError for bad input, gearfem::SolverError for failures.

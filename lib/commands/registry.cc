@@ -10,6 +10,7 @@ namespace gearfem::commands
   Command bench_command();
   Command solve_command();
   Command calibrate_command();
+  Command batch_command();
 
   const std::vector<Command> &registry()
   {
@@ -20,6 +21,7 @@ namespace gearfem::commands
       mesh_command(),
       solve_command(),
       calibrate_command(),
+      batch_command(),
       bench_command(),
     };
     return commands;

@@ -14,7 +14,11 @@ namespace gearfem::fem
 {
   namespace
   {
-    /// PETSc (and MPI, if nobody did) initialised on first use, finalised at exit.
+    /// PETSc (and MPI, if nobody did) initialised on first use, finalised at exit (or by
+    /// finalize_petsc(), before MPI_Finalize). Every PETSc object of gearfem lives on
+    /// PETSC_COMM_SELF; when MPI is already running (gearfem batch), PETSc's world is
+    /// MPI_COMM_SELF too, so that its initialisation is not collective: each rank runs the
+    /// serial chain on its own.
     struct PetscGuard
     {
       bool we_initialized = false;
@@ -24,21 +28,33 @@ namespace gearfem::fem
         PetscInitialized(&done);
         if (!done)
           {
+            int mpi_running = 0;
+            MPI_Initialized(&mpi_running);
+            if (mpi_running)
+              PETSC_COMM_WORLD = MPI_COMM_SELF;
             if (PetscInitializeNoArguments() != 0)
               throw SolverError("PETSc could not be initialised");
             we_initialized = true;
           }
       }
-      ~PetscGuard()
+      ~PetscGuard() { finalize(); }
+      void finalize()
       {
-        if (we_initialized)
+        PetscBool up = PETSC_FALSE;
+        PetscInitialized(&up);
+        if (we_initialized && up)
           PetscFinalize();
+        we_initialized = false;
       }
     };
-    void ensure_petsc()
+    bool guard_created = false;
+    PetscGuard &petsc_guard()
     {
       static PetscGuard guard;
+      guard_created = true;
+      return guard;
     }
+    void ensure_petsc() { (void)petsc_guard(); }
     void check(PetscErrorCode ierr, const char *what)
     {
       if (ierr != 0)
@@ -46,6 +62,14 @@ namespace gearfem::fem
                           std::to_string(int(ierr)) + ")");
     }
   } // namespace
+
+  void initialize_petsc() { ensure_petsc(); }
+
+  void finalize_petsc()
+  {
+    if (guard_created)
+      petsc_guard().finalize();
+  }
 
   SolverKind solver_kind_from_string(const std::string &s)
   {

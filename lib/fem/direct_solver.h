@@ -17,6 +17,14 @@ namespace gearfem::fem
     mumps,
     umfpack
   };
+  /// Initialise PETSc now (it is otherwise initialised on the first MUMPS factorisation).
+  /// A multi-threaded caller (the batch manager thread) calls this before it starts its
+  /// threads, so that PETSc's start-up is not concurrent with them.
+  void initialize_petsc();
+  /// Finalise PETSc if gearfem initialised it (idempotent). A program that finalises MPI
+  /// itself calls this first; otherwise PETSc is finalised at exit.
+  void finalize_petsc();
+
   /// "automatic", "mumps", "umfpack" -> SolverKind; throws InputError otherwise.
   SolverKind solver_kind_from_string(const std::string &s);
   const char *to_string(SolverKind k);

@@ -155,6 +155,25 @@ namespace gearfem::io::hdf5
       string_attribute(set.get(), "quantity", quantity_value);
     }
 
+    /// A 1-D dataset of variable-length UTF-8 strings.
+    void string_dataset(hid_t group, const char *name, const std::vector<std::string> &data) const
+    {
+    Hid type(ok_id(H5Tcopy(H5T_C_S1), name), H5Tclose);
+    ok(H5Tset_size(type.get(), H5T_VARIABLE), name);
+    ok(H5Tset_cset(type.get(), H5T_CSET_UTF8), name);
+    const hsize_t n = data.size();
+    Hid space(ok_id(H5Screate_simple(1, &n, nullptr), name), H5Sclose);
+    Hid set(ok_id(H5Dcreate2(group, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                             H5P_DEFAULT),
+                  name),
+            H5Dclose);
+    std::vector<const char *> p(data.size());
+    for (std::size_t i = 0; i < data.size(); ++i)
+      p[i] = data[i].c_str();
+    if (n > 0)
+      ok(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()), name);
+    }
+
   private:
     std::string file_;
   };

@@ -110,7 +110,9 @@ namespace gearfem::io
 
   void write_table_file(const std::vector<std::pair<std::string, const Table *>> &tables,
                         const std::filesystem::path &file,
-                        const std::map<std::string, std::string> &attributes)
+                        const std::map<std::string, std::string> &attributes,
+                        const std::vector<std::tuple<std::string, std::string, std::vector<std::string>>>
+                          &text_columns)
   {
     for (const auto &[name, table] : tables)
       {
@@ -145,6 +147,15 @@ namespace gearfem::io
               w.dataset(g.get(), dataset_name(h[c]).c_str(), {hsize_t(col.size())}, col,
                         table->unit(c));
             }
+        }
+      for (const auto &[group, name, values] : text_columns)
+        {
+          const htri_t e = H5Lexists(f.get(), group.c_str(), H5P_DEFAULT);
+          Hid g(w.ok_id(e > 0 ? H5Gopen2(f.get(), group.c_str(), H5P_DEFAULT) :
+                                H5Gcreate2(f.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                        "/" + group),
+                H5Gclose);
+          w.string_dataset(g.get(), dataset_name(name).c_str(), values);
         }
       w.ok(H5Fflush(f.get(), H5F_SCOPE_GLOBAL), "flush");
       w.ok(f.close(), "close");

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace gearfem::io
@@ -64,7 +65,11 @@ namespace gearfem::io
   /// Column tables to an HDF5 file: one group per table, one float64 dataset per column
   /// (named dataset_name(header)), string attributes on the root. Atomic; values checked
   /// finite first. Empty tables are skipped.
+  /// `text_columns`: (group, dataset name, values) written as 1-D string datasets (e.g.
+  /// the design ids and status messages of a batch table).
   void write_table_file(const std::vector<std::pair<std::string, const Table *>> &tables,
                         const std::filesystem::path &file,
-                        const std::map<std::string, std::string> &attributes);
+                        const std::map<std::string, std::string> &attributes,
+                        const std::vector<std::tuple<std::string, std::string, std::vector<std::string>>>
+                          &text_columns = {});
 } // namespace gearfem::io

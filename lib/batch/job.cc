@@ -1,0 +1,241 @@
+#include "batch/job.h"
+
+#include "base/atomic_file.h"
+#include "base/errors.h"
+#include "base/number.h"
+#include "contact/parameters.h"
+#include "io/journal.h"
+#include "io/solve_results.h"
+#include "post/parameters.h"
+#include "post/solve_run.h"
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace gearfem::batch
+{
+  namespace
+  {
+    std::string one_line(std::string s)
+    {
+      for (char &c : s)
+        if (c == '\n' || c == '\r')
+          c = ' ';
+      while (!s.empty() && s.back() == ' ')
+        s.pop_back();
+      return s;
+    }
+
+    std::string exact(double x)
+    {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%a", x); // hexadecimal: exact round trip
+      return buf;
+    }
+
+    /// A journal left by a killed run of this job is resumed only if it has the job's key.
+    bool journal_matches(const std::filesystem::path &dir, const std::string &key)
+    {
+      const auto file = dir / post::journal_file;
+      if (!std::filesystem::exists(file))
+        return false;
+      try
+        {
+          io::JournalHeader h;
+          (void)io::replay_journal(file, h);
+          if (h.key == key)
+            return true;
+        }
+      catch (const InputError &)
+        {}
+      std::error_code ec;
+      std::filesystem::remove(file, ec);
+      return false;
+    }
+
+    std::vector<double> design_torques(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solve");
+      const std::string t = prm.get("Torques");
+      prm.leave_subsection();
+      try
+        {
+          return parse_double_list("Solve/Torques", t);
+        }
+      catch (const InputError &)
+        {
+          return {};
+        }
+    }
+  } // namespace
+
+  void write_job_record(const std::filesystem::path &dir, const JobRecord &r)
+  {
+    std::ostringstream s;
+    s << "gearfem-batch-job 1\nid " << r.id << "\nkey " << r.key << "\nstatus " << r.status << "\nmessage "
+      << one_line(r.message) << "\nwall_time " << exact(r.wall_time) << "\ncontact_ratio " << exact(r.contact_ratio)
+      << "\ntorques";
+    for (const double t : r.torques)
+      s << " " << exact(t);
+    s << "\nend\n";
+    write_file_atomically(dir / job_record_file, s.str());
+  }
+
+  std::optional<JobRecord> read_job_record(const std::filesystem::path &dir)
+  {
+    std::ifstream in(dir / job_record_file);
+    if (!in)
+      return std::nullopt;
+    std::string line;
+    if (!std::getline(in, line) || line != "gearfem-batch-job 1")
+      return std::nullopt;
+    JobRecord r;
+    bool end = false;
+    while (std::getline(in, line))
+      {
+        const auto sp    = line.find(' ');
+        const auto name  = line.substr(0, sp);
+        const auto value = sp == std::string::npos ? std::string() : line.substr(sp + 1);
+        if (name == "id")
+          r.id = value;
+        else if (name == "key")
+          r.key = value;
+        else if (name == "status")
+          r.status = value;
+        else if (name == "message")
+          r.message = value;
+        else if (name == "wall_time")
+          r.wall_time = std::strtod(value.c_str(), nullptr);
+        else if (name == "contact_ratio")
+          r.contact_ratio = std::strtod(value.c_str(), nullptr);
+        else if (name == "torques")
+          {
+            std::istringstream v(value);
+            std::string tok;
+            while (v >> tok)
+              r.torques.push_back(std::strtod(tok.c_str(), nullptr));
+          }
+        else if (name == "end")
+          end = true;
+      }
+    if (!end)
+      return std::nullopt;
+    return r;
+  }
+
+  std::string job_key(const Study &study, std::size_t i)
+  {
+    auto prm = design_handler(study, i);
+    return io::content_hash(design_parameters(*prm));
+  }
+
+  bool job_finished(const std::filesystem::path &jobs_root, const std::string &id, const std::string &key)
+  {
+    const auto dir = jobs_root / id;
+    const auto rec = read_job_record(dir);
+    if (!rec || !rec->ok() || rec->key != key || rec->id != id)
+      return false;
+    try
+      {
+        (void)io::read_solve_results(dir / "results.h5", true);
+        return true;
+      }
+    catch (const InputError &)
+      {
+        return false;
+      }
+  }
+
+  JobRecord record_invalid(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
+                           const std::string &message)
+  {
+    const auto dir = jobs_root / study.designs.designs[i].id;
+    std::filesystem::create_directories(dir);
+    JobRecord rec;
+    rec.id      = study.designs.designs[i].id;
+    rec.status  = "failed";
+    rec.message = one_line("invalid design: " + message);
+    try
+      {
+        auto prm        = design_handler(study, i);
+        const auto text = design_parameters(*prm);
+        rec.key         = io::content_hash(text);
+        rec.torques     = design_torques(*prm);
+        write_file_atomically(dir / job_parameters_file, text);
+      }
+    catch (const std::exception &)
+      {}
+    write_job_record(dir, rec);
+    return rec;
+  }
+
+  JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root)
+  {
+    const auto t0  = std::chrono::steady_clock::now();
+    const auto dir = jobs_root / study.designs.designs[i].id;
+    JobRecord rec;
+    rec.id = study.designs.designs[i].id;
+    try
+      {
+        std::filesystem::create_directories(dir);
+        auto prm        = design_handler(study, i);
+        const auto text = design_parameters(*prm);
+        rec.key         = io::content_hash(text);
+        rec.torques     = design_torques(*prm);
+        write_file_atomically(dir / job_parameters_file, text);
+        std::error_code ec;
+        std::filesystem::remove(dir / job_record_file, ec); // a re-run replaces the old record
+
+        const contact::GearContactInput in = contact::parse_gear_contact_input(*prm);
+        post::SolveRunOptions opt;
+        opt.post          = post::parse_post_parameters(*prm);
+        rec.contact_ratio = in.pair->contact_ratio();
+        opt.output_dir    = dir;
+        opt.input_hash    = rec.key;
+        opt.input_name    = job_parameters_file;
+        opt.resume        = journal_matches(dir, rec.key);
+        auto model        = in.model();
+        const post::SolveRunResult r = post::run_solve(*model, in, opt);
+        if (r.failure.empty())
+          rec.status = "ok";
+        else
+          rec.message = "solver failure: " + r.failure + " (" + std::to_string(r.results.sweep.n_rows()) +
+                        " positions finished, kept in results.h5)";
+      }
+    catch (const InputError &e)
+      {
+        rec.message = std::string("invalid design: ") + e.what();
+      }
+    catch (const SolverError &e)
+      {
+        rec.message = std::string("solver failure: ") + e.what();
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        rec.message = "error: " + s.str();
+      }
+    catch (const std::exception &e)
+      {
+        rec.message = std::string("error: ") + e.what();
+      }
+    rec.message   = one_line(rec.message);
+    rec.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    try
+      {
+        write_job_record(dir, rec);
+      }
+    catch (const std::exception &e)
+      {
+        rec.status  = "failed";
+        rec.message = std::string("cannot write the job record: ") + e.what();
+      }
+    return rec;
+  }
+} // namespace gearfem::batch

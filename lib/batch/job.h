@@ -1,0 +1,55 @@
+#pragma once
+// One job of a batch: one design's sweep (torques x positions) on its own factorised
+// bodies, run with the serial chain (post::run_solve) into jobs/<design id>/:
+//   design.prm    the design's parameters (the study with the design's values), as read
+//   results.h5    (+ sweep.csv, pairs.csv, ...) the solve-results contract
+//   job.txt       the job record, written last and atomically: its presence with
+//                 `status ok` and the same key marks a finished job
+//   solve.journal only while the job is unfinished (a killed batch resumes it)
+// A job never throws: an invalid design, a solver failure or any other error is recorded
+// with its message.
+#include "batch/study.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gearfem::batch
+{
+  inline constexpr const char *job_record_file = "job.txt";
+  inline constexpr const char *job_parameters_file = "design.prm";
+  inline constexpr const char *jobs_folder = "jobs";
+
+  struct JobRecord
+  {
+    std::string id;
+    std::string key;              ///< hash of design.prm: what the results depend on
+    std::string status = "failed"; ///< "ok" or "failed"
+    std::string message;          ///< the error of a failed job (one line)
+    double wall_time     = 0;     ///< [s]
+    double contact_ratio = 0;     ///< transverse contact ratio of the design's pair [-]
+    std::vector<double> torques;  ///< the design's torques [N m] (rows of the aggregate)
+    bool ok() const { return status == "ok"; }
+  };
+
+  /// Write `dir`/job.txt atomically. Read it back: nullopt if missing or unreadable.
+  void write_job_record(const std::filesystem::path &dir, const JobRecord &r);
+  std::optional<JobRecord> read_job_record(const std::filesystem::path &dir);
+
+  /// The restart key of design `i` (hash of its parameters). Throws like design_handler.
+  std::string job_key(const Study &study, std::size_t i);
+
+  /// True when jobs/<id> holds a finished job of this key: job.txt with status ok and the
+  /// key, and a readable results.h5.
+  bool job_finished(const std::filesystem::path &jobs_root, const std::string &id, const std::string &key);
+
+  /// Run design `i` into jobs_root/<id> (created). A journal of the same key left by a
+  /// killed run is resumed. Never throws; the record is also written to job.txt.
+  JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root);
+
+  /// Record design `i` as failed with `message` without running it (an invalid design
+  /// found by check_designs).
+  JobRecord record_invalid(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
+                           const std::string &message);
+} // namespace gearfem::batch

@@ -1,0 +1,319 @@
+#include "batch/run.h"
+
+#include "base/errors.h"
+#include "base/number.h"
+#include "fem/direct_solver.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+namespace gearfem::batch
+{
+  namespace
+  {
+    constexpr int tag_ready = 181, tag_job = 182;
+
+    /// The jobs not yet handed out; shared by rank 0's manager thread and its own worker.
+    class Queue
+    {
+    public:
+      explicit Queue(std::vector<int> jobs)
+        : jobs_(std::move(jobs))
+      {}
+      int take()
+      {
+        std::lock_guard<std::mutex> lock(m_);
+        return next_ < jobs_.size() ? jobs_[next_++] : -1;
+      }
+
+    private:
+      std::mutex m_;
+      std::vector<int> jobs_;
+      std::size_t next_ = 0;
+    };
+
+    /// Rank 0's progress lines: jobs done/total, failures, elapsed time, ETA.
+    class Reporter
+    {
+    public:
+      Reporter(std::ostream *out, const Study &s, std::filesystem::path jobs_root, std::size_t total)
+        : out_(out), study_(s), root_(std::move(jobs_root)), total_(total), start_(std::chrono::steady_clock::now())
+      {}
+      void finished(int job, bool ok, int rank, double wall)
+      {
+        std::lock_guard<std::mutex> lock(m_);
+        ++done_;
+        failed_ += !ok;
+        if (!out_)
+          return;
+        const double t   = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double eta = t / double(done_) * double(total_ - done_);
+        const std::string &id = study_.designs.designs[std::size_t(job)].id;
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "batch: job %zu/%zu done (%s, rank %d, %.1f s, %s), failures %zu, elapsed %.1f s, ETA %.1f s",
+                      done_, total_, id.c_str(), rank, wall, ok ? "ok" : "FAILED", failed_, t, eta);
+        *out_ << buf << std::endl;
+        if (!ok)
+          {
+            const auto rec = read_job_record(root_ / id);
+            *out_ << "  " << id << ": " << (rec ? rec->message : std::string("(no job record)")) << std::endl;
+          }
+      }
+      std::size_t failed() const { return failed_; }
+
+    private:
+      std::mutex m_;
+      std::ostream *out_;
+      const Study &study_;
+      std::filesystem::path root_;
+      std::size_t total_, done_ = 0, failed_ = 0;
+      std::chrono::steady_clock::time_point start_;
+    };
+
+    /// Rank 0: the manager thread (if there are other ranks) and, if the MPI library allows
+    /// it, a worker in the main thread.
+    void manage(const Study &study, const MpiSession &mpi, const std::filesystem::path &root,
+                const std::vector<int> &todo, Reporter &reporter)
+    {
+      Queue queue(todo);
+      const bool local_worker = mpi.size() == 1 || mpi.thread_multiple();
+      if (local_worker)
+        fem::initialize_petsc(); // not concurrently with the manager thread's MPI calls
+      std::thread manager;
+      if (mpi.size() > 1)
+        manager = std::thread([&]() {
+          int active = mpi.size() - 1;
+          while (active > 0)
+            {
+              int flag = 0;
+              MPI_Status st;
+              MPI_Iprobe(MPI_ANY_SOURCE, tag_ready, MPI_COMM_WORLD, &flag, &st);
+              if (!flag)
+                {
+                  std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                  continue;
+                }
+              double msg[3];
+              MPI_Recv(msg, 3, MPI_DOUBLE, st.MPI_SOURCE, tag_ready, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+              if (msg[0] >= 0)
+                reporter.finished(int(msg[0]), msg[1] > 0, st.MPI_SOURCE, msg[2]);
+              int next = queue.take();
+              MPI_Send(&next, 1, MPI_INT, st.MPI_SOURCE, tag_job, MPI_COMM_WORLD);
+              if (next < 0)
+                --active;
+            }
+        });
+      std::exception_ptr error;
+      if (local_worker)
+        try
+          {
+            for (int j = queue.take(); j >= 0; j = queue.take())
+              {
+                const JobRecord rec = run_job(study, std::size_t(j), root);
+                reporter.finished(j, rec.ok(), 0, rec.wall_time);
+              }
+          }
+        catch (...)
+          {
+            error = std::current_exception(); // the other ranks still get their jobs
+          }
+      if (manager.joinable())
+        manager.join();
+      if (error)
+        std::rethrow_exception(error);
+    }
+
+    void work(const Study &study, const std::filesystem::path &root)
+    {
+      double msg[3] = {-1, 0, 0};
+      while (true)
+        {
+          MPI_Send(msg, 3, MPI_DOUBLE, 0, tag_ready, MPI_COMM_WORLD);
+          int job = -1;
+          MPI_Recv(&job, 1, MPI_INT, 0, tag_job, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          if (job < 0)
+            return;
+          const JobRecord rec = run_job(study, std::size_t(job), root);
+          msg[0] = job, msg[1] = rec.ok() ? 1 : 0, msg[2] = rec.wall_time;
+        }
+    }
+
+    std::vector<std::string> units_of(const Study &study)
+    {
+      std::vector<std::string> units;
+      const auto prm = design_handler(study, 0);
+      for (const auto &p : study.designs.paths)
+        units.push_back(parameter_unit(*prm, p));
+      return units;
+    }
+  } // namespace
+
+  MpiSession::MpiSession()
+  {
+    int init = 0, provided = 0;
+    MPI_Initialized(&init);
+    if (!init)
+      {
+        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided);
+        we_initialized_ = true;
+      }
+    else
+      MPI_Query_thread(&provided);
+    multiple_ = provided >= MPI_THREAD_MULTIPLE;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+
+  MpiSession::~MpiSession()
+  {
+    if (!we_initialized_)
+      return;
+    fem::finalize_petsc();
+    int done = 0;
+    MPI_Finalized(&done);
+    if (!done)
+      MPI_Finalize();
+  }
+
+  void MpiSession::barrier() const { MPI_Barrier(MPI_COMM_WORLD); }
+
+  int MpiSession::broadcast(int value) const
+  {
+    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value;
+  }
+
+  BatchOutcome run_batch(const Study &study, const MpiSession &mpi, const BatchOptions &o)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    BatchOutcome r;
+    r.designs       = study.designs.designs.size();
+    if (o.merge_only)
+      r.mine = r.designs;
+    const auto root = o.output_dir / jobs_folder;
+    std::vector<int> todo;
+    std::ostream *out = mpi.rank() == 0 ? o.out : nullptr;
+    int plan_error    = 0;
+    std::string plan_message;
+    if (mpi.rank() == 0 && !o.merge_only)
+      try
+        {
+          std::filesystem::create_directories(root);
+          std::map<std::size_t, std::string> invalid;
+          for (const auto &[i, msg] : check_designs(study))
+            invalid[i] = msg;
+          for (std::size_t i = 0; i < r.designs; ++i)
+            {
+              if (int(i % std::size_t(o.slices)) != o.slice - 1)
+                continue;
+              ++r.mine;
+              const auto &d = study.designs.designs[i];
+              if (invalid.count(i))
+                {
+                  record_invalid(study, i, root, invalid[i]);
+                  ++r.invalid;
+                  if (out)
+                    *out << "batch: invalid design " << d.id << " (" << d.origin << "), recorded: " << invalid[i] << "\n";
+                }
+              else if (job_finished(root, d.id, job_key(study, i)))
+                ++r.skipped;
+              else
+                todo.push_back(int(i));
+            }
+          if (out)
+            *out << "batch: " << r.designs << " designs" << (o.slices > 1 ? ", slice " + std::to_string(o.slice) + "/" + std::to_string(o.slices) + " holds " + std::to_string(r.mine) : std::string())
+                 << "; " << r.skipped << " finished before (skipped), " << r.invalid << " invalid, " << todo.size()
+                 << " jobs to run on " << mpi.size() << " rank" << (mpi.size() > 1 ? "s" : "")
+                 << (mpi.size() == 1 ? "" : mpi.thread_multiple() ? " (rank 0 manages and works)" : " (rank 0 only manages: the MPI library has no MPI_THREAD_MULTIPLE)")
+                 << std::endl;
+        }
+      catch (const std::exception &e)
+        {
+          plan_error   = 1;
+          plan_message = e.what();
+        }
+    if (mpi.size() > 1)
+      plan_error = mpi.broadcast(plan_error);
+    if (plan_error && mpi.rank() != 0)
+      {
+        r.exit_status = 2; // rank 0 reports the error
+        return r;
+      }
+    if (plan_error)
+      throw InputError("gearfem batch: planning the jobs failed: " + plan_message);
+
+    // From here on every rank reaches the final broadcast, whatever fails on rank 0.
+    std::exception_ptr error;
+    if (!o.merge_only)
+      {
+        if (mpi.rank() == 0)
+          try
+            {
+              Reporter reporter(out, study, root, todo.size());
+              manage(study, mpi, root, todo, reporter);
+              r.ran = todo.size();
+            }
+          catch (...)
+            {
+              error = std::current_exception();
+            }
+        else
+          work(study, root);
+      }
+
+    int status = 0;
+    if (mpi.rank() == 0 && !error)
+      try
+      {
+        auto outcomes = collect_outcomes(study, root);
+        for (std::size_t i = 0; i < outcomes.size(); ++i)
+          if (outcomes[i].torques.empty()) // not run: its rows still name its torques
+            try
+              {
+                auto prm = design_handler(study, i);
+                prm->enter_subsection("Solve");
+                outcomes[i].torques = parse_double_list("Solve/Torques", prm->get("Torques"));
+                prm->leave_subsection();
+              }
+            catch (const std::exception &)
+              {}
+        r.failed            = 0; // counted from the records: also the invalid and earlier ones
+        for (std::size_t i = 0; i < outcomes.size(); ++i)
+          {
+            if (!o.merge_only && int(i % std::size_t(o.slices)) != o.slice - 1)
+              continue;
+            if (!outcomes[i].record)
+              ++r.not_run;
+            else if (!outcomes[i].record->ok())
+              ++r.failed;
+          }
+        if (o.slices == 1 || o.merge_only)
+          {
+            const std::size_t rows = write_aggregate(study, units_of(study), outcomes, o.output_dir);
+            if (out)
+              *out << "batch: " << rows << " rows (design x torque) in " << (o.output_dir / "batch.csv").string()
+                   << " and batch.h5" << std::endl;
+          }
+        status = r.failed + r.not_run > 0 ? exit_some_failed : 0;
+      }
+      catch (...)
+        {
+          error = std::current_exception();
+        }
+    if (error)
+      status = 1;
+    r.exit_status = mpi.size() > 1 ? mpi.broadcast(status) : status;
+    if (error)
+      std::rethrow_exception(error);
+    r.seconds     = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  }
+} // namespace gearfem::batch

@@ -1,0 +1,231 @@
+#!/usr/bin/env bash
+# Quick checks of `gearfem batch` (issue 18, section 6) on the tiny study of data/batch:
+# sector models of a 20/40 pair, 3 designs x 2 torques x 5 positions.
+#   batch_checks.sh mpi     GEARFEM SRC_DIR  mpirun -np 2 equals the serial run; the numbers of
+#                                            one design equal `gearfem solve` of that design
+#                                            written by hand, and its batch.csv row equals the
+#                                            statistics computed here from that solve's sweep.csv
+#                                            (and batch.h5 equals batch.csv; slices 1/2 and 2/2
+#                                            merged by --merge equal the whole batch)
+#   batch_checks.sh restart GEARFEM SRC_DIR  a batch killed with SIGKILL after its first job,
+#                                            re-run, skips the finished job and completes
+#   batch_checks.sh failure GEARFEM SRC_DIR  an invalid design and a failing solve are recorded
+#                                            in the status column, the good design completes,
+#                                            exit status 4; --validate lists the invalid one
+#   batch_checks.sh bad     GEARFEM SRC_DIR  unknown parameter path, malformed row, value that
+#                                            is not a number: exit 2 naming column and row,
+#                                            before any job (no jobs folder), also under mpirun
+set -uo pipefail
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+mode=$1 gearfem=$2 src=$3
+fail() { echo "FAIL: $*" >&2; exit 1; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/gearfem_batch.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+data=$src/tests/regression/data/batch
+# study TABLE: the tiny study with its design table replaced, in $work/study.prm
+study() { sed -e "s|Design table = designs.csv|Design table = $data/$1|" "$data/study.prm" > "$work/study.prm"; }
+
+case $mode in
+  mpi)
+    study designs.csv
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/serial" > "$work/serial.log" 2>&1 ||
+      { cat "$work/serial.log"; fail "serial batch failed"; }
+    mpirun -np 2 "$gearfem" batch "$work/study.prm" --output-dir "$work/mpi" > "$work/mpi.log" 2>&1 ||
+      { cat "$work/mpi.log"; fail "mpirun -np 2 batch failed"; }
+    cat "$work/mpi.log"
+    # Rank 0 alone prints: one line per job, one final summary.
+    [ "$(grep -c '^batch: job ' "$work/mpi.log")" -eq 3 ] || fail "expected 3 job lines from rank 0 only"
+    [ "$(grep -c '^results in ' "$work/mpi.log")" -eq 1 ] || fail "more than one rank wrote the run record"
+    grep -q 'rank 1,' "$work/mpi.log" || fail "rank 1 ran no job"
+    # Independent case of design 'soft': the study with E2 = 100 GPa appended by hand (a later
+    # `set` overrides an earlier one), solved by `gearfem solve`.
+    { cat "$work/study.prm"; printf 'subsection Material\n  subsection Gear 2\n    set Young'"'"'s modulus = 100\n  end\nend\nsubsection Solve\n  set VTU = none\nend\n'; } > "$work/soft.prm"
+    "$gearfem" solve "$work/soft.prm" --output-dir "$work/soft" > "$work/soft.log" 2>&1 ||
+      { cat "$work/soft.log"; fail "solve of the soft design failed"; }
+    /usr/bin/python3 - "$work" <<'PY' || fail "batch results differ"
+import csv, sys
+w = sys.argv[1]
+def rows(path):
+    r = list(csv.reader(open(path)))
+    return r[0], r[1:]
+def close(u, v, rel=1e-12):
+    return abs(u - v) <= rel * max(1.0, abs(u), abs(v))
+# 1. np=2 equals np=1, every column but the wall times.
+hs, rs = rows(f"{w}/serial/batch.csv")
+hm, rm = rows(f"{w}/mpi/batch.csv")
+assert hs == hm and len(rs) == len(rm) == 6, (len(rs), len(rm))
+for a, b in zip(rs, rm):
+    for h, u, v in zip(hs, a, b):
+        if h in ("wall time [s]",):
+            continue
+        if h.endswith("[text]"):
+            assert u == v, (h, u, v)
+        else:
+            assert close(float(u), float(v)), (h, u, v)
+assert all(r[-1] == "ok" for r in rs), [r[-1] for r in rs]
+for job in ("base", "shift", "soft"):
+    hj, a = rows(f"{w}/serial/jobs/{job}/sweep.csv")
+    _, b = rows(f"{w}/mpi/jobs/{job}/sweep.csv")
+    assert len(a) == len(b) == 10, (job, len(a), len(b))
+    t = hj.index("time [s]")
+    for x, y in zip(a, b):
+        assert all(close(float(u), float(v)) for i, (u, v) in enumerate(zip(x, y)) if i != t), job
+print("np=2 equals np=1: 6 rows of batch.csv, 3 x 10 rows of sweep.csv")
+# 2. Design 'soft' equals gearfem solve of the hand-written case.
+hj, a = rows(f"{w}/serial/jobs/soft/sweep.csv")
+hs2, b = rows(f"{w}/soft/sweep.csv")
+assert hj == hs2 and len(a) == len(b)
+t = hj.index("time [s]")
+for x, y in zip(a, b):
+    assert all(close(float(u), float(v), 1e-10) for i, (u, v) in enumerate(zip(x, y)) if i != t)
+# 3. Its batch.csv rows equal the statistics of that solve's sweep.csv.
+col = {n: i for i, n in enumerate(hs2)}
+agg = {n: i for i, n in enumerate(hs)}
+for T in (100.0, 200.0):
+    sel = [r for r in b if float(r[col["torque [N m]"]]) == T]
+    ste = [float(r[col["STE [um]"]]) for r in sel]
+    k = [float(r[col["k_secant per width [N/(mm um)]"]]) for r in sel]
+    row = [r for r in rs if r[agg["id [text]"]] == "soft" and float(r[agg["torque [N m]"]]) == T][0]
+    want = {"positions [-]": len(sel), "STE mean [um]": sum(ste) / len(ste),
+            "STE peak-to-peak [um]": max(ste) - min(ste),
+            "k_secant per width mean [N/(mm um)]": sum(k) / len(k),
+            "k_secant per width min [N/(mm um)]": min(k), "k_secant per width max [N/(mm um)]": max(k),
+            "p_max [MPa]": max(float(r[col["p_max [MPa]"]]) for r in sel),
+            "root stress pinion [MPa]": max(float(r[col["root stress pinion [MPa]"]]) for r in sel),
+            "root stress gear [MPa]": max(float(r[col["root stress gear [MPa]"]]) for r in sel),
+            "Material/Gear 2/Young's modulus [GPa]": 100.0}
+    for n, v in want.items():
+        assert close(float(row[agg[n]]), v, 1e-8), (n, row[agg[n]], v)
+    assert 1.3 < float(row[agg["contact ratio [-]"]]) < 2.0
+# 4. Physics: the softer gear gives the larger mean STE at each torque.
+for T in ("100", "200"):
+    m = {r[agg["id [text]"]]: float(r[agg["STE mean [um]"]]) for r in rs if r[agg["torque [N m]"]] == T}
+    assert m["soft"] > 1.2 * m["base"], m
+print("design 'soft' equals gearfem solve of its case; its batch.csv rows equal the sweep statistics")
+# 5. batch.h5 holds the same numbers as batch.csv (if h5py is there).
+try:
+    import h5py
+except ImportError:
+    sys.exit(0)
+with h5py.File(f"{w}/serial/batch.h5", "r") as f:
+    assert f.attrs["format"] in ("gearfem-batch", b"gearfem-batch")
+    g = f["batch"]
+    for h in hs:
+        name = h.replace("/", "|") if h.startswith(("Gear", "Material")) else h.replace("/", " per ")
+        v = g[name][()]
+        assert len(v) == 6, h
+        for x, r in zip(v, rs):
+            x = x.decode() if isinstance(x, bytes) else x
+            assert (x == r[hs.index(h)]) if h.endswith("[text]") else close(float(x), float(r[hs.index(h)]), 1e-9), (h, x)
+print("batch.h5 equals batch.csv")
+PY
+    # Job-array slices 1/2 and 2/2, then --merge: the same table as the whole batch.
+    "$gearfem" batch "$work/study.prm" --slice 1/2 --output-dir "$work/sliced" > "$work/s1.log" 2>&1 || { cat "$work/s1.log"; fail "slice 1/2"; }
+    [ ! -e "$work/sliced/batch.csv" ] || fail "a slice wrote batch.csv"
+    "$gearfem" batch "$work/study.prm" --slice 2/2 --output-dir "$work/sliced" > "$work/s2.log" 2>&1 || { cat "$work/s2.log"; fail "slice 2/2"; }
+    grep -q "slice 2/2 holds 1" "$work/s2.log" || fail "slice 2/2 does not hold 1 design"
+    "$gearfem" batch "$work/study.prm" --merge --output-dir "$work/sliced" > "$work/merge.log" 2>&1 || { cat "$work/merge.log"; fail "--merge"; }
+    diff <(cut -d, -f1-15,17 "$work/serial/batch.csv") <(cut -d, -f1-15,17 "$work/sliced/batch.csv") || fail "merged slices differ from the whole batch"
+    echo "slices 1/2 + 2/2 merged equal the whole batch"
+    ;;
+  restart)
+    study designs.csv
+    # 20 positions per torque (a later `set` overrides the study's 5): jobs long enough to
+    # kill the batch between two jobs.
+    printf 'subsection Solve\n  set Number of positions = 20\nend\n' >> "$work/study.prm"
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/kill.log" 2>&1 &
+    pid=$!
+    for _ in $(seq 1 2400); do
+      n=$(ls "$work"/out/jobs/*/job.txt 2> /dev/null | wc -l)
+      [ "$n" -ge 1 ] && break
+      kill -0 $pid 2> /dev/null || break
+      sleep 0.05
+    done
+    kill -9 $pid 2> /dev/null || fail "the batch ended before it could be killed"
+    wait $pid 2> /dev/null
+    done_before=$(ls "$work"/out/jobs/*/job.txt | wc -l)
+    [ "$done_before" -ge 1 ] && [ "$done_before" -lt 3 ] || fail "$done_before jobs finished before the kill (expected 1 or 2)"
+    [ ! -e "$work/out/batch.csv" ] || fail "a killed batch wrote batch.csv"
+    ls -R "$work/out" | grep -q '\.tmp\.' && fail "temporary file left at the kill point is visible as a result"
+    finished=$(for f in "$work"/out/jobs/*/job.txt; do basename "$(dirname "$f")"; done)
+    sums=$(cd "$work/out/jobs" && md5sum */job.txt */results.h5)
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/restart.log" 2>&1 ||
+      { cat "$work/restart.log"; fail "restarted batch failed"; }
+    cat "$work/restart.log"
+    grep -q "$done_before finished before (skipped)" "$work/restart.log" || fail "the restart did not skip the $done_before finished jobs"
+    [ "$(grep -c '^batch: job ' "$work/restart.log")" -eq $((3 - done_before)) ] || fail "the restart ran more jobs than were unfinished"
+    for j in $finished; do
+      grep -q "($j," "$work/restart.log" && fail "finished job $j ran again"
+    done
+    (cd "$work/out/jobs" && echo "$sums" | md5sum -c --quiet) || fail "the files of a finished job changed"
+    [ "$(tail -n +2 "$work/out/batch.csv" | grep -c ',ok$')" -eq 6 ] || fail "batch.csv does not hold 6 ok rows"
+    # A changed design re-runs alone: change E2 of 'soft' only.
+    sed -e 's/^soft,0,100$/soft,0,110/' "$data/designs.csv" > "$work/changed.csv"
+    sed -e "s|Design table = .*|Design table = $work/changed.csv|" "$work/study.prm" > "$work/changed.prm"
+    "$gearfem" batch "$work/changed.prm" --output-dir "$work/out" > "$work/changed.log" 2>&1 ||
+      { cat "$work/changed.log"; fail "batch with one changed design failed"; }
+    grep -q "2 finished before (skipped)" "$work/changed.log" || { cat "$work/changed.log"; fail "the unchanged designs were not skipped"; }
+    grep -q "(soft," "$work/changed.log" || fail "the changed design did not re-run"
+    ;;
+  failure)
+    study failing.csv
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/log" 2>&1
+    rc=$?
+    cat "$work/log"
+    [ $rc -eq 4 ] || fail "exit status $rc (expected 4: some jobs failed)"
+    grep -qi "terminate\|Traceback\|internal error" "$work/log" && fail "crash text"
+    /usr/bin/python3 - "$work/out/batch.csv" <<'PY' || fail "batch.csv does not record the failures"
+import csv, sys
+r = list(csv.reader(open(sys.argv[1])))
+h, rows = r[0], r[1:]
+i, s = h.index("id [text]"), h.index("status [text]")
+st = {}
+for row in rows:
+    st.setdefault(row[i], []).append(row)
+assert len(st["good"]) == 2 and all(x[s] == "ok" for x in st["good"]), st["good"]
+assert all(float(x[h.index("STE mean [um]")]) > 0 for x in st["good"])
+bad = st["interfering"][0][s]
+assert bad.startswith("failed: invalid design") and "interference" in bad, bad
+nc = st["nocontact"][0][s]
+assert nc.startswith("failed: solver failure") and "no contact" in nc, nc
+# A failed design has its torques but no numbers.
+assert [x[h.index("torque [N m]")] for x in st["interfering"]] == ["100", "200"]
+assert st["interfering"][0][h.index("STE mean [um]")] == ""
+print("good: ok; interfering:", bad[:90], "...; nocontact:", nc[:70], "...")
+PY
+    [ -s "$work/out/jobs/good/results.h5" ] || fail "the good design's results.h5 is missing"
+    grep -q "^status failed" "$work/out/jobs/interfering/job.txt" || fail "no failed record for the invalid design"
+    "$gearfem" batch "$work/study.prm" --validate > "$work/v.log" 2>&1
+    rc=$?
+    cat "$work/v.log"
+    [ $rc -eq 2 ] || fail "--validate: exit status $rc (expected 2)"
+    grep -q "1 of 3 designs are invalid" "$work/v.log" || fail "--validate does not count the invalid design"
+    grep -q "design interfering (row 5 of" "$work/v.log" || fail "--validate does not name the design and its row"
+    ;;
+  bad)
+    check() { # TABLE EXPECT...: exit 2, each EXPECT in stderr, no job started
+      study "$1"; shift
+      "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+      rc=$?
+      cat "$work/stderr"
+      [ $rc -eq 2 ] || fail "exit status $rc (expected 2)"
+      for e in "$@"; do grep -qF "$e" "$work/stderr" || fail "message does not name '$e'"; done
+      [ ! -e "$work/out" ] || fail "output left behind: $(ls -R "$work/out")"
+    }
+    check unknown_path.csv "column 'Gear 1/Tip relief amout'" "row 2 of" "unknown parameter path"
+    check malformed.csv "row 3" "2 cells" "3 cells"
+    check not_a_number.csv "column 'Material/Gear 2/Young's modulus'" "row 3 of" "2O7"
+    # Under mpirun: the same exit status, and only rank 0 prints the message.
+    study unknown_path.csv
+    mpirun -np 2 "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "mpirun: exit status $rc (expected 2)"
+    [ "$(grep -c 'gearfem: error' "$work/stderr")" -eq 1 ] || fail "mpirun: the error is not printed once"
+    [ ! -e "$work/out" ] || fail "mpirun: output left behind"
+    # --slice outside 1..N and --merge on another command are bad input too.
+    "$gearfem" batch "$work/study.prm" --slice 3/2 > /dev/null 2>&1; [ $? -eq 2 ] || fail "--slice 3/2 not exit 2"
+    "$gearfem" solve "$work/study.prm" --merge > /dev/null 2>&1; [ $? -eq 2 ] || fail "solve --merge not exit 2"
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Harris map (issue 18, section 4) of inputs/harris_map.prm with `gearfem batch`, then
+# scripts/plot_batch.py: harris_map.png, design_space.png and the table of minima.
+#   run.sh full    [NP]  the study as written: full gears, 25 mm bores, 12 torques x 40 positions
+#   run.sh preview [NP]  3-tooth sector models (rim-clamped), h_contact 0.2 mm, 16 positions:
+#                        the shape of the map in minutes, not its numbers
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+src=$here/../..
+gearfem=${GEARFEM:-$src/build/app/gearfem}
+mode=${1:-preview} np=${2:-2}
+out=$here/out_$mode
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
+study=$src/inputs/harris_map.prm
+if [ "$mode" = preview ]; then
+  mkdir -p "$out"
+  { sed -e "s|Design table = harris_map_designs.csv|Design table = $src/inputs/harris_map_designs.csv|" "$study"
+    printf 'subsection Mesh\n  set Model = sector\n  set Sector teeth = 3\n  set h_contact = 0.2\nend\n'
+    printf 'subsection Solve\n  set Number of positions = 16\n  set VTU = none\nend\n'; } > "$out/preview.prm"
+  study=$out/preview.prm
+fi
+s=$(date +%s)
+mpirun -np "$np" "$gearfem" batch "$study" --output-dir "$out" | tee "$out/batch.log" | grep -v '^batch: job'
+echo "wall $(( $(date +%s) - s )) s at np = $np"
+MPLBACKEND=Agg /usr/bin/python3 "$src/scripts/plot_batch.py" "$out"
