@@ -21,18 +21,6 @@ namespace gearfem::batch
 {
   namespace
   {
-    std::string exception_text(const dealii::ExceptionBase &e)
-    {
-      std::ostringstream s;
-      e.print_info(s);
-      std::string t = s.str();
-      while (!t.empty() && (t.back() == '\n' || t.back() == ' '))
-        t.pop_back();
-      while (!t.empty() && (t.front() == '\n' || t.front() == ' '))
-        t.erase(t.begin());
-      return t;
-    }
-
     /// "design table d.csv, column 'Gear 1/Tip relief amount', row 4 (design d4)"
     std::string where(const Study &s, std::size_t path, std::size_t i)
     {
@@ -71,7 +59,7 @@ namespace gearfem::batch
         {
           for (std::size_t k = 0; k < sections.size(); ++k)
             prm.leave_subsection();
-          const std::string text = exception_text(e);
+          const std::string text = params::exception_text(e);
           if (text.find("not yet declared") != std::string::npos)
             throw InputError(where(s, path, i), s.designs.paths[path],
                              "the path of an entry of the case file (gearfem batch --print-parameters lists them)",
@@ -208,7 +196,7 @@ namespace gearfem::batch
       }
     catch (const dealii::ExceptionBase &e)
       {
-        throw InputError("in " + s.file.string() + ": " + exception_text(e));
+        throw InputError("in " + s.file.string() + ": " + params::exception_text(e));
       }
     for (std::size_t p = 0; p < s.designs.paths.size(); ++p)
       set_by_path(*prm, s, p, i);
@@ -290,7 +278,7 @@ namespace gearfem::batch
         }
       catch (const dealii::ExceptionBase &e)
         {
-          bad.emplace_back(i, exception_text(e));
+          bad.emplace_back(i, params::exception_text(e));
         }
       catch (const std::exception &e) // a bug of a check: record it, do not stop the batch
         {

@@ -46,18 +46,6 @@ namespace gearfem::commands
       prm.leave_subsection();
     }
 
-    std::string exception_text(const dealii::ExceptionBase &e)
-    {
-      std::ostringstream s;
-      e.print_info(s);
-      std::string t = s.str();
-      while (!t.empty() && (t.back() == '\n' || t.back() == ' '))
-        t.pop_back();
-      while (!t.empty() && (t.front() == '\n' || t.front() == ' '))
-        t.erase(t.begin());
-      return t;
-    }
-
     std::string json_escape(const std::string &s)
     {
       std::string r;
@@ -213,7 +201,7 @@ namespace gearfem::commands
             }
           catch (const dealii::ExceptionBase &e)
             {
-              throw InputError("in " + ctx.input_file.string() + ": " + exception_text(e));
+              throw InputError("in " + ctx.input_file.string() + ": " + params::exception_text(e));
             }
         }
 
@@ -332,7 +320,7 @@ namespace gearfem::commands
         // without params::get_* ("Can't convert the parameter value <...> for entry <...>")
         // is bad input, not a bug of the computation. Every entry is read through
         // params/checked.h, so this is not expected to trigger.
-        const std::string text = exception_text(e);
+        const std::string text = params::exception_text(e);
         if (text.find("the parameter value") != std::string::npos ||
             text.find("for entry <") != std::string::npos)
           {

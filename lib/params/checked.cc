@@ -195,4 +195,16 @@ namespace gearfem::params
         check_value(path, value, *pattern, value);
     });
   }
+
+  std::string exception_text(const dealii::ExceptionBase &e)
+  {
+    std::ostringstream s;
+    e.print_info(s);
+    std::string t = s.str();
+    while (!t.empty() && (t.back() == '\n' || t.back() == ' '))
+      t.pop_back();
+    while (!t.empty() && (t.front() == '\n' || t.front() == ' '))
+      t.erase(t.begin());
+    return t;
+  }
 } // namespace gearfem::params

@@ -24,6 +24,7 @@
 namespace dealii
 {
   class ParameterHandler;
+  class ExceptionBase;
 }
 
 namespace gearfem::params
@@ -43,4 +44,7 @@ namespace gearfem::params
   /// parse_input() lets through). Throws InputError naming "Section/Entry", the value and
   /// the pattern. Call after parse_input().
   void check_entries(const dealii::ParameterHandler &prm);
+
+  /// The message of a deal.II exception (ParameterHandler's parse errors), trimmed.
+  std::string exception_text(const dealii::ExceptionBase &e);
 } // namespace gearfem::params
