@@ -1,4 +1,4 @@
-// Hard cases of the contact solver (label `long`; validation/contact_hard_cases/run.sh).
+// Hard cases of the contact solver (label `validation`; validation/contact_hard_cases/run.sh).
 // Each must converge or fail with a clear diagnosis; the table is printed for
 // validation/contact_hard_cases/README.md. Independent checks per case: torque balance
 // (moment of the contact forces = T1), and the physics stated in each row.

@@ -1,6 +1,7 @@
-// Hertz convergence study (validation, label `long`): both methods, plane stress and plane
-// strain, equal and dissimilar discs, h = a/4 ... a/16. Prints the table recorded in
-// validation/hertz/README.md and validation/RESULTS.md. Closed form: Johnson 1985, sec. 4.3.
+// Hertz convergence study (label `validation`; run by validation/hertz/run.sh): both
+// methods, plane stress and plane strain, equal and dissimilar discs, h = a/4 ... a/16.
+// Prints the table recorded in validation/hertz/README.md and validation/RESULTS.md.
+// Closed form: Johnson 1985, sec. 4.3.
 // validation/hertz/check.py compares the absolute p0 and a fits with its own closed form.
 #include "contact/hertz.h"
 
