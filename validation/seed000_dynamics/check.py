@@ -54,7 +54,7 @@ def main():
     with open(os.path.join(args.out, "profile.log")) as f:
         text = f.read()
     eps = re.search(r"contact ratio\s*(?:eps_alpha\s*)?[=:]?\s*([0-9.]+)", text)
-    rb1 = re.search(r"base radi(?:us|i)[^0-9]*([0-9.]+)", text)
+    rb1 = re.search(r"gear 1: .*?\brb ([0-9.]+)", text)
     c.within("Table 1 pair: contact ratio", float(eps.group(1)) if eps else None, 1.72, 1.73,
              "seed 000 Table 1: 1.72-1.73 (SEEDS.md)")
     c.abs("Table 1 pair: base radius R_g1", float(rb1.group(1)) if rb1 else None, 45.105, 0.0005,
