@@ -152,7 +152,9 @@ def main():
         c.true("cycle summary, 2 models x 3 torques", False, "missing rows", "6 rows", "summarise.py")
     log = os.path.join(args.out, "validate_gear_contact.log")
     with open(log) as f:
-        lines = [line.rstrip("\n") for line in f if not line.startswith("[")]
+        # The tables and their notes; not GoogleTest's progress lines or blank lines.
+        lines = [line.rstrip("\n") for line in f
+                 if line.strip() and not line.startswith("[") and not line.startswith("Running main()")]
     if args.validation:
         write_if_changed(args.validation, "\n".join(strip_columns(lines)) + "\n")
     tmp = os.path.join(args.out, "validation_tables.md")
