@@ -1,13 +1,12 @@
-#!/bin/sh
+#!/usr/bin/env bash
 # Calibration of the Weber/Cornell model against the Parker-pair FE sweeps (see README.md).
-# Needs validation/parker_ste/results/plane_stress/results.h5 (runs parker_ste first if it
-# is missing), then writes calibration.md, calibration.png and the tables into results/.
-set -e
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${GEARFEM_BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" --target gearfem -j"${GEARFEM_JOBS:-2}"
-[ -f "$here/../parker_ste/results/plane_stress/results.h5" ] || "$here/../parker_ste/run.sh"
-"$build/app/gearfem" calibrate "$here/calibrate.prm" --output-dir "$here/results"
-cp "$here/results/calibration.md" "$here/results/calibration.png" "$here/"
+# Needs validation/parker_ste/results/plane_stress (runs parker_ste/sweeps.sh when missing,
+# about 2 min), then gearfem calibrate into results/ (about 4 s); copies calibration.md and
+# calibration.png here; check.py ends with PASS or FAIL.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
+need "$gearfem"
+"$root/validation/parker_ste/sweeps.sh" --if-missing
+(cd "$here" && "$gearfem" calibrate "$here/calibrate.prm" --output-dir "$out") 2>&1 | tee "$out/calibrate.log"
+cp "$out/calibration.md" "$out/calibration.png" "$here/"
+check "$out/calibration.md" --out "$out"

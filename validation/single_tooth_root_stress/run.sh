@@ -1,11 +1,14 @@
-#!/bin/sh
-# Single-tooth root stress against ISO 6336-3 (see README.md). Builds and runs the long
-# validation test, writes results.csv and root_stress.png into this folder.
-set -e
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-build=${GEARFEM_BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" --target validate_single_tooth -j2
-GEARFEM_VALIDATION_OUT="$here" "$build/tests/unit/fem/validate_single_tooth"
+#!/usr/bin/env bash
+# Single-tooth root stress against ISO 6336-3 (see README.md). Runs the validation
+# executable validate_single_tooth (about 1 min), writes results/results.csv, the tracked
+# results.csv (no timings in it) and root_stress.png; check.py ends with PASS or FAIL.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
+exe="$build/tests/unit/fem/validate_single_tooth"
+need "$exe"
+rm -f "$out/results.csv"
+rc=0
+GEARFEM_VALIDATION_OUT="$out" "$exe" 2>&1 | tee "$out/validate_single_tooth.log" || rc=$?
+[ -f "$out/results.csv" ] && cp "$out/results.csv" "$here/results.csv"
 /usr/bin/python3 "$here/plot.py" "$here/results.csv"
+check "$out/results.csv" --status "$rc" --out "$out"

@@ -1,4 +1,4 @@
-// Gear-pair contact validation (label `long`; run by validation/parker_ste/run.sh). Prints
+// Gear-pair contact validation (label `validation`; run by validation/parker_ste/run.sh). Prints
 // the markdown tables of validation/parker_ste/README.md:
 //  1. mesh convergence of STE at C and D (demo pair, 340 N m), Richardson extrapolation;
 //  2. penalty against Lagrange (and penalty x10) at every position of a 40-position cycle,

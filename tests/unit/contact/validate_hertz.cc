@@ -1,6 +1,8 @@
-// Hertz convergence study (validation, label `long`): both methods, plane stress and plane
-// strain, equal and dissimilar discs, h = a/4 ... a/16. Prints the table recorded in
-// validation/hertz/README.md and validation/RESULTS.md. Closed form: Johnson 1985, sec. 4.3.
+// Hertz convergence study (label `validation`; run by validation/hertz/run.sh): both
+// methods, plane stress and plane strain, equal and dissimilar discs, h = a/4 ... a/16.
+// Prints the table recorded in validation/hertz/README.md and validation/RESULTS.md.
+// Closed form: Johnson 1985, sec. 4.3.
+// validation/hertz/check.py compares the absolute p0 and a fits with its own closed form.
 #include "contact/hertz.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +37,8 @@ TEST(HertzConvergence, Table)
   if (only)
     levels = {8};
   std::cout << "| case | method | h | DoFs | active nodes | p0 fit/exact | p0 nodal/exact | a fit/exact | "
-               "profile RMS/p0 | geometry it | time [s] |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+               "profile RMS/p0 | p0 fit [MPa] | a fit [mm] | geometry it | time [s] |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto &nc : cases)
     for (const Method m : {Method::lagrange, Method::penalty})
       for (const double l : levels)
@@ -47,7 +50,8 @@ TEST(HertzConvergence, Table)
           std::cout << std::setprecision(4) << "| " << nc.name << " | " << to_string(m) << " | a/" << l
                     << " | " << r.n_dofs << " | " << r.n_active << " | " << r.p0_fit / r.p0_exact
                     << " | " << r.p0_nodal / r.p0_exact << " | " << r.a_fit / r.a_exact << " | "
-                    << r.profile_error << " | " << r.solution.geometry_iterations << " | "
+                    << r.profile_error << " | " << std::setprecision(6) << r.p0_fit / 1e6 << " | " << r.a_fit * 1e3
+                    << " | " << r.solution.geometry_iterations << " | "
                     << std::setprecision(3) << r.seconds << " |" << std::endl;
           if (l >= 8)
             {

@@ -1,4 +1,5 @@
-// Validation (label long): single tooth under ISO tip load for z = 19, 50, 100 (x = 0)
+// Validation (label `validation`, run by validation/single_tooth_root_stress/run.sh):
+// single tooth under ISO tip load for z = 19, 50, 100 (x = 0)
 // and z = 50, x = +0.5, three uniformly refined meshes each, Richardson extrapolation.
 // Reference: ISO 6336-3 (2006) method B, F_t/(b m) Y_Fa Y_Sa (lib/analytical), +-10 %.
 // Writes results.csv to $GEARFEM_VALIDATION_OUT (default: the current folder).

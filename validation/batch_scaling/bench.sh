@@ -2,7 +2,7 @@
 # Wall time of `gearfem batch` at np = 1 and np = 2 on the same study (8 designs), parallel
 # efficiency E = T1 / (2 T2), peak resident memory and CPU time per process (GNU time), and
 # the busy fraction of the two ranks at np = 2.
-# Usage: run.sh [GEARFEM] [OUT]
+# Usage: bench.sh [GEARFEM] [OUT]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 gearfem=${1:-$here/../../build/app/gearfem}

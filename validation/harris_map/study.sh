@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Harris map (issue 18, section 4) of inputs/harris_map.prm with `gearfem batch`, then
 # scripts/plot_batch.py: harris_map.png, design_space.png and the table of minima.
-#   run.sh full    [NP]  the study as written: full gears, 25 mm bores, 12 torques x 40 positions
-#   run.sh preview [NP]  3-tooth sector models (rim-clamped), h_contact 0.2 mm, 16 positions:
+#   study.sh full    [NP]  the study as written: full gears, 25 mm bores, 12 torques x 40 positions
+#   study.sh preview [NP]  3-tooth sector models (rim-clamped), h_contact 0.2 mm, 16 positions:
 #                        the shape of the map in minutes, not its numbers
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
