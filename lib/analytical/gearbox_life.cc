@@ -168,6 +168,21 @@ namespace gearfem::analytical::gearbox
     return r;
   }
 
+  Train build_train(const GearboxInput &in)
+  {
+    if (in.materials.size() != in.stages.size())
+      throw InputError("Materials", std::to_string(in.materials.size()) + " given",
+                       std::to_string(in.stages.size()) + " (one per stage)");
+    Train t = build_train(in.stages, in.input_speed, in.agma);
+    for (std::size_t k = 0; k < in.stages.size(); ++k)
+      {
+        AgmaFactors f = in.agma;
+        f.E1 = f.E2 = in.materials[k].E, f.nu1 = f.nu2 = in.materials[k].nu;
+        t.stages[k] = build_stage(in.stages[k], f);
+      }
+    return t;
+  }
+
   GearboxResult analyse(const GearboxInput &in)
   {
     in.spectrum.check();
@@ -185,7 +200,7 @@ namespace gearfem::analytical::gearbox
         require_range(p + "Roughness Ra", in.materials[k].Ra * 1e6, 0.01, 1.0, "um");
       }
     GearboxResult r;
-    r.train = build_train(in.stages, in.input_speed, in.agma);
+    r.train = build_train(in);
     r.stress = agma_stresses(r.train, in.spectrum, in.agma);
     r.scuff = scuffing_table(r.train, in.spectrum, in.agma, in.materials, in.oil, in.conditions);
     r.lives = member_lives(r.train, in.spectrum, r.stress, in.materials);

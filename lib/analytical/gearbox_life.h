@@ -69,6 +69,10 @@ namespace gearfem::analytical::gearbox
     scuffing::Lubricant oil;
     scuffing::Conditions conditions;
   };
+  /// The train with each stage's elastic constants (Z_E) from its material. Throws
+  /// InputError for a material count that differs from the stage count.
+  Train build_train(const GearboxInput &in);
+
   struct GearboxResult
   {
     Train train;

@@ -10,6 +10,7 @@ namespace gearfem::commands
   Command bench_command();
   Command solve_command();
   Command calibrate_command();
+  Command gearbox_command();
 
   const std::vector<Command> &registry()
   {
@@ -17,6 +18,7 @@ namespace gearfem::commands
       profile_command(),
       dynamics_command(),
       rate_command(),
+      gearbox_command(),
       mesh_command(),
       solve_command(),
       calibrate_command(),
