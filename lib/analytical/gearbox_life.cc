@@ -130,7 +130,7 @@ namespace gearfem::analytical::gearbox
         b.add(name, "sun", "bending", "sun-planet mesh", mat.bending, {{F0("sun"), cs}});
         b.add(name, "planet", "contact", "sun-side flank (sun-planet mesh)", mat.contact, {{H0, cp}});
         b.add(name, "planet", "contact", "ring-side flank (planet-ring mesh)", mat.contact, {{H1, cp}});
-        b.add(name, "planet", "bending", "both meshes, damages summed", mat.bending, {{F0("planet"), cp}, {F11, cp}});
+        b.add(name, "planet", "bending", "both meshes; damages summed", mat.bending, {{F0("planet"), cp}, {F11, cp}});
         b.add(name, "ring", "contact", "planet-ring mesh", mat.contact, {{H1, cr}});
       }
     return out;
