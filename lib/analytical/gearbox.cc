@@ -87,6 +87,20 @@ namespace gearfem::analytical::gearbox
         g.J2 = agma::geometry_factor_J(z2, x2, (l.C6 - l.C2) / l.Rb2, g.alpha, l.phi_r, f.tool);
         g.Y_J2 = g.J2.Y_J;
       }
+    // ISO 6336-2 with the standard's sign convention for the internal gear: with z2 < 0 the
+    // M1 term tan(alpha_a2) - (eps - 1) 2 pi/z2 is rho2/r_b2 at the inner single-contact point.
+    iso6336::ContactInput ci;
+    ci.z1 = z1, ci.z2 = internal ? -z2 : z2;
+    ci.alpha_t = g.alpha, ci.alpha_wt = l.phi_r;
+    ci.d1 = m * z1;
+    ci.da1 = 2 * g.r_a1, ci.da2 = sgn * 2 * g.r_a2;
+    ci.db1 = m * z1 * std::cos(g.alpha), ci.db2 = sgn * m * z2 * std::cos(g.alpha);
+    ci.b = g.b, ci.Ft = 1.0;
+    ci.E1 = f.E1, ci.nu1 = f.nu1, ci.E2 = f.E2, ci.nu2 = f.nu2;
+    ci.eps_alpha = l.contact_ratio;
+    g.iso = iso6336::contact_stress(ci);
+    if (internal)
+      g.iso.Z_D = 1.0;
     return g;
   }
 
@@ -98,6 +112,9 @@ namespace gearfem::analytical::gearbox
     r.sigma_H = g.Z_E * std::sqrt(W / (g.d_w1 * g.b) * f.Z_R / g.Z_I);
     r.sigma_F1 = W * g.K_B1 / (g.b * g.module * g.Y_J1);
     r.sigma_F2 = g.Y_J2 > 0.0 ? W * g.K_B2 / (g.b * g.module * g.Y_J2) : 0.0;
+    const double Ft_iso = Ft * g.r_w1 / (0.5 * g.module * g.z1);
+    const double H0 = g.iso.sigma_H0 * std::sqrt(Ft_iso * f.K_A * f.K_v_iso * f.K_Hbeta);
+    r.sigma_H1_iso = g.iso.Z_B * H0, r.sigma_H2_iso = g.iso.Z_D * H0;
     return r;
   }
 

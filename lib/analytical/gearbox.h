@@ -58,6 +58,9 @@ namespace gearfem::analytical::gearbox
     agma::Enclosure enclosure = agma::Enclosure::precision;
     double E1 = 206e9, nu1 = 0.3, E2 = 206e9, nu2 = 0.3;
     agma::Tool tool;
+    /// ISO 6336-1 factors of the ISO contact stress (reported beside AGMA; the same
+    /// inputs as `gearfem rate`); K_Halpha = 1.
+    double K_A = 1.0, K_v_iso = 1.05, K_Hbeta = 1.0;
   };
 
   /// Seed 001 table 7.2-1: K_gamma for 2..9 planets (1.00 1.00 1.15 1.19 1.23 1.27 1.30 1.33).
@@ -82,6 +85,9 @@ namespace gearfem::analytical::gearbox
     double m_B1 = 0, m_B2 = 0, K_B1 = 1, K_B2 = 1;
     double Y_J1 = 0, Y_J2 = 0;      ///< Y_J2 = 0: not rated in bending (ring)
     agma::BendingGeometry J1, J2;
+    /// ISO 6336-2 factors at F_t = 1 N (internal: z2, d_a2, d_b2 negative, as the
+    /// standard's sign convention; Z_D = 1 for the internal gear).
+    iso6336::ContactFactors iso;
   };
   /// Geometry, line of action and AGMA factors of a mesh. hold1, hold2: holding diameters
   /// for K_B [m] (bore, or the ring's outside diameter); 0: K_B = 1.
@@ -94,6 +100,9 @@ namespace gearfem::analytical::gearbox
   struct MeshStress
   {
     double sigma_H = 0, sigma_F1 = 0, sigma_F2 = 0; ///< sigma_F2 = 0 for the ring
+    /// ISO 6336-2 contact stress of pinion (Z_B) and gear (Z_D), for comparison; the
+    /// damage sum uses the AGMA sigma_H as the thesis does. F_t,ISO = F_t r_w1/r_1.
+    double sigma_H1_iso = 0, sigma_H2_iso = 0;
   };
   MeshStress mesh_stress(const MeshGeometry &g, double Ft, const AgmaFactors &f);
 

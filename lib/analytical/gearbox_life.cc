@@ -43,7 +43,7 @@ namespace gearfem::analytical::gearbox
             {
               const double q = M / M_ref, h = std::sqrt(q);
               const MeshStress &a = at_ref[k][j];
-              r[k][j].push_back({a.sigma_H * h, a.sigma_F1 * q, a.sigma_F2 * q});
+              r[k][j].push_back({a.sigma_H * h, a.sigma_F1 * q, a.sigma_F2 * q, a.sigma_H1_iso * h, a.sigma_H2_iso * h});
             }
       }
     return r;

@@ -195,6 +195,7 @@ namespace gearfem::analytical::gearbox
     const RatingInput ri = parse_rating_parameters(prm);
     AgmaFactors &f = st.input.agma;
     f.K_o = ri.K_o, f.K_v = ri.K_v, f.K_s = ri.K_s, f.Z_R = ri.Z_R, f.enclosure = ri.enclosure, f.tool = ri.tool;
+    f.K_A = ri.K_A, f.K_v_iso = ri.K_v_iso, f.K_Hbeta = ri.K_Hbeta;
     prm.enter_subsection("Gearbox");
     st.input.input_speed = params::get_double(prm, "Input speed");
     const int n = params::get_integer(prm, "Number of stages");

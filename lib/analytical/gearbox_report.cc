@@ -68,6 +68,13 @@ namespace gearfem::analytical::gearbox
         {"bending geometry factor of the " + p, "Y_J1", "908-B89 (seed 001 eq. 4.3.2-1)", "-", g.Y_J1},
         {"bending geometry factor of the " + q + (g.internal ? " (ring: not rated)" : ""), "Y_J2", "908-B89 (seed 001 eq. 4.3.2-1)", "-", g.Y_J2},
         {"load-sharing factor", "K_gamma", "seed 001 table 7.2-1 / input", "-", st.K_gamma},
+        {"zone factor", "Z_H", "6336-2 eq. 10", "-", g.iso.Z_H},
+        {"contact ratio factor", "Z_eps", "6336-2 eq. 19", "-", g.iso.Z_eps},
+        {"single pair contact factor, pinion", "Z_B", "6336-2 eqs. 12, 14" + std::string(g.internal ? " (z2 < 0)" : ""), "-", g.iso.Z_B},
+        {"single pair contact factor, gear", "Z_D", g.internal ? "6336-2 (internal gear: 1)" : "6336-2 eqs. 13, 15", "-", g.iso.Z_D},
+        {"application factor", "K_A", "6336-1 (input)", "-", f.K_A},
+        {"dynamic factor", "K_v,ISO", "6336-1 (input)", "-", f.K_v_iso},
+        {"face load factor", "K_Hbeta", "6336-1 (input); K_Halpha = 1", "-", f.K_Hbeta},
       };
       return r;
     }
@@ -115,14 +122,16 @@ namespace gearfem::analytical::gearbox
           for (const Row &row : mesh_rows(g, st, in.agma))
             s << "| " << row.quantity << " | " << row.symbol << " | " << row.clause << " | " << row.unit << " | "
               << num(row.value, fs, row.symbol) << " |\n";
-          s << "\n| M_in (N m) | sigma_H (MPa) | sigma_F1 (MPa) | sigma_F2 (MPa) | theta_fl,max (K) | theta_B,max (C) | "
-               "h_c,min (um) | lambda_min | P_scuffing | risk |\n|---|---|---|---|---|---|---|---|---|---|\n";
+          s << "\n| M_in (N m) | sigma_H (MPa) | sigma_F1 (MPa) | sigma_F2 (MPa) | ISO sigma_H1 / sigma_H2 (MPa) | "
+               "theta_fl,max (K) | theta_B,max (C) | h_c,min (um) | lambda_min | P_scuffing | risk |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|\n";
           for (std::size_t b = 0; b < in.spectrum.torques.size(); ++b)
             {
               const MeshStress &m = r.stress[k][j][b];
               const scuffing::Result &c = r.scuff[k][j][b];
               s << "| " << num(in.spectrum.torques[b], fs, "torque") << " | " << num(m.sigma_H / 1e6, fs, "sigma_H") << " | "
                 << num(m.sigma_F1 / 1e6, fs, "sigma_F1") << " | " << num(m.sigma_F2 / 1e6, fs, "sigma_F2") << " | "
+                << num(m.sigma_H1_iso / 1e6, fs, "ISO sigma_H1") << " / " << num(m.sigma_H2_iso / 1e6, fs, "ISO sigma_H2") << " | "
                 << num(c.theta_fl_max, fs, "theta_fl") << " | " << num(c.theta_B_max, fs, "theta_B") << " | "
                 << num(c.h_c_min * 1e6, fs, "h_c") << " | " << num(c.lambda_min, fs, "lambda") << " | "
                 << num(c.P, fs, "P", 3) << " | " << c.risk << " |\n";
@@ -154,8 +163,8 @@ namespace gearfem::analytical::gearbox
     const std::string f1 = (dir / "gearbox.csv").string(), f2 = (dir / "gearbox_life.csv").string(),
                       f3 = (dir / "scuffing_path.csv").string();
     std::ostringstream a, l, p;
-    a << "stage,mesh,input torque [N m],F_t [N],sigma_H [MPa],sigma_F1 [MPa],sigma_F2 [MPa],theta_fl_max [K],"
-         "theta_B_max [C],h_c_min [um],lambda_min [-],P_scuffing [-]\n";
+    a << "stage,mesh,input torque [N m],F_t [N],sigma_H [MPa],sigma_F1 [MPa],sigma_F2 [MPa],ISO sigma_H1 [MPa],"
+         "ISO sigma_H2 [MPa],theta_fl_max [K],theta_B_max [C],h_c_min [um],lambda_min [-],P_scuffing [-]\n";
     // The worst scuffing bin (highest theta_B) for the path file.
     std::size_t wk = 0, wj = 0, wb = 0;
     for (std::size_t k = 0; k < r.train.stages.size(); ++k)
@@ -171,7 +180,8 @@ namespace gearfem::analytical::gearbox
               a << st.in.name << "," << st.meshes[j].name << "," << num(in.spectrum.torques[b], f1, "torque") << ","
                 << num(st.tangential_load(r.train.torques(in.spectrum.torques[b])[k]), f1, "F_t", 10) << ","
                 << num(m.sigma_H / 1e6, f1, "sigma_H", 10) << "," << num(m.sigma_F1 / 1e6, f1, "sigma_F1", 10) << ","
-                << num(m.sigma_F2 / 1e6, f1, "sigma_F2", 10) << "," << num(c.theta_fl_max, f1, "theta_fl") << ","
+                << num(m.sigma_F2 / 1e6, f1, "sigma_F2", 10) << "," << num(m.sigma_H1_iso / 1e6, f1, "ISO sigma_H1", 10) << ","
+                << num(m.sigma_H2_iso / 1e6, f1, "ISO sigma_H2", 10) << "," << num(c.theta_fl_max, f1, "theta_fl") << ","
                 << num(c.theta_B_max, f1, "theta_B") << "," << num(c.h_c_min * 1e6, f1, "h_c") << ","
                 << num(c.lambda_min, f1, "lambda") << "," << num(c.P, f1, "P") << "\n";
             }

@@ -144,6 +144,22 @@ TEST(Gearbox, Seed001ContactStressesAt45000)
         EXPECT_LE(std::max(s[k][j][0].sigma_F1, s[k][j][0].sigma_F2), s[0][0][0].sigma_F2);
       }
   EXPECT_EQ(t.stages[0].meshes[0].gear, "planet");
+  // ISO 6336-2 beside AGMA (not in the thesis; reported): Z_B of the internal mesh with the
+  // standard's z2 < 0 convention equals the geometric definition
+  // tan(alpha_wt)/sqrt(rho1 rho2/(r_b1 r_b2)) at the inner single-contact point B,
+  // rho1 = C2, rho2 = C6 + C2 (seed 001 sec. 4.3, lower signs).
+  for (int k = 0; k < 2; ++k)
+    {
+      const MeshGeometry &g = t.stages[k].meshes[1];
+      const agma::LineOfAction &l = g.loa;
+      const double M1 = std::tan(l.phi_r) / std::sqrt(l.C2 / l.Rb1 * (l.C6 + l.C2) / l.Rb2);
+      EXPECT_NEAR(g.iso.M1, M1, 1e-12);
+      EXPECT_EQ(g.iso.Z_D, 1.0);
+      for (int j = 0; j < 2; ++j)
+        std::printf("stage %d %s: ISO sigma_H1 %.1f / sigma_H2 %.1f MPa (AGMA %.1f)\n", k + 1,
+                    t.stages[k].meshes[j].name.c_str(), s[k][j][0].sigma_H1_iso / 1e6, s[k][j][0].sigma_H2_iso / 1e6,
+                    s[k][j][0].sigma_H / 1e6);
+    }
 }
 
 // Digest sec. 3 and tables 9.4-5/6: the damage chain from the thesis' tabulated sigma_H and
