@@ -292,3 +292,40 @@ TEST(Gearbox, BadInputNamesTheParameter)
   expect_named(with([](GearboxInput &x) { x.stages[0].planets = 9, x.stages[0].z_sun = 16; }),
                "Stage 1/Number of planets");
 }
+
+// Both planetary layouts against the Willis equation n_S - n_C = -(Z_R/Z_S)(n_R - n_C)
+// (closed form, independent of seed 001's eqs. 7.2-5..7), and a parallel stage against
+// n2 = n1 z1/z2, F_t = M/r_w1 and table 8.2-1 (pinion 1, gear Z_P/Z_G cycles).
+TEST(Gearbox, LayoutsAgainstWillisAndParallelPair)
+{
+  GearboxInput in = seed001();
+  for (Fixed fixed : {Fixed::ring, Fixed::carrier})
+    {
+      StageInput s = in.stages[0];
+      s.fixed = fixed;
+      const Stage st = build_stage(s, in.agma);
+      const double nS = 1.0 / st.ratio; // input speed 1
+      const double nC = fixed == Fixed::ring ? 1.0 : 0.0, nR = fixed == Fixed::ring ? 0.0 : 1.0;
+      EXPECT_NEAR(nS - nC, -74.0 / 16.0 * (nR - nC), 1e-12);
+      EXPECT_NEAR(st.n_sun_rel, nS - nC, 1e-12);
+      EXPECT_NEAR(st.n_planet_rel * 28.0, -st.n_sun_rel * 16.0, 1e-12); // equal pitch-line speed
+      EXPECT_NEAR(st.cycles_ring, 3.0, 1e-12);
+      EXPECT_NEAR(st.torque_ratio, std::abs(st.ratio), 1e-15);
+    }
+  StageInput p = in.stages[0];
+  p.type = StageType::parallel;
+  p.output = "gear 2";
+  p.z_sun = 20, p.z_planet = 40, p.x_sun = 0.0, p.x_planet = 0.0;
+  const Stage st = build_stage(p, in.agma);
+  ASSERT_EQ(st.meshes.size(), 1u);
+  EXPECT_NEAR(st.ratio, 2.0, 1e-15);
+  EXPECT_NEAR(st.cycles_sun, 1.0, 1e-15);
+  EXPECT_NEAR(st.cycles_planet, 0.5, 1e-15);
+  EXPECT_NEAR(st.tangential_load(1000.0), 1000.0 / 0.06, 1e-9); // r_w1 = 20 x 6/2 mm
+  in.stages = {p};
+  in.materials.resize(1);
+  const GearboxResult r = analyse(in);
+  EXPECT_EQ(r.lives.size(), 4u); // gear 1 and gear 2, contact and bending
+  p.output = "gear 1";
+  EXPECT_THROW(build_stage(p, in.agma), gearfem::InputError);
+}
