@@ -183,6 +183,19 @@ namespace gearfem::analytical::gearbox
     return t;
   }
 
+  namespace
+  {
+    int first_failure(const std::vector<MemberLife> &lives)
+    {
+      int first = -1;
+      double shortest = fatigue::infinite_life;
+      for (std::size_t i = 0; i < lives.size(); ++i)
+        if (lives[i].damage.life_spectra < shortest)
+          shortest = lives[i].damage.life_spectra, first = int(i);
+      return first;
+    }
+  } // namespace
+
   GearboxResult analyse(const GearboxInput &in)
   {
     in.spectrum.check();
@@ -204,10 +217,23 @@ namespace gearfem::analytical::gearbox
     r.stress = agma_stresses(r.train, in.spectrum, in.agma);
     r.scuff = scuffing_table(r.train, in.spectrum, in.agma, in.materials, in.oil, in.conditions);
     r.lives = member_lives(r.train, in.spectrum, r.stress, in.materials);
-    double shortest = fatigue::infinite_life;
-    for (std::size_t i = 0; i < r.lives.size(); ++i)
-      if (r.lives[i].damage.life_spectra < shortest)
-        shortest = r.lives[i].damage.life_spectra, r.first_failure = int(i);
+    r.first_failure = first_failure(r.lives);
     return r;
+  }
+
+  void use_reference_stresses(GearboxResult &r, const GearboxInput &in,
+                              const std::vector<std::vector<MeshStress>> &at_ref, double M_ref)
+  {
+    StressTable s = scaled_stresses(r.train, in.spectrum, at_ref, M_ref);
+    for (std::size_t k = 0; k < s.size(); ++k)
+      for (std::size_t j = 0; j < s[k].size(); ++j)
+        for (std::size_t b = 0; b < s[k][j].size(); ++b)
+          {
+            s[k][j][b].sigma_H1_iso = r.stress[k][j][b].sigma_H1_iso;
+            s[k][j][b].sigma_H2_iso = r.stress[k][j][b].sigma_H2_iso;
+          }
+    r.stress = s;
+    r.lives = member_lives(r.train, in.spectrum, r.stress, in.materials);
+    r.first_failure = first_failure(r.lives);
   }
 } // namespace gearfem::analytical::gearbox

@@ -84,4 +84,10 @@ namespace gearfem::analytical::gearbox
   };
   /// Throws InputError (named entry) for any bad input, before computing anything.
   GearboxResult analyse(const GearboxInput &in);
+
+  /// Replace the AGMA stresses of the damage sum by stresses given at M_ref (scaled_stresses)
+  /// and redo the lives and the first failure; the ISO columns and the scuffing results
+  /// keep the computed values.
+  void use_reference_stresses(GearboxResult &r, const GearboxInput &in,
+                              const std::vector<std::vector<MeshStress>> &at_ref, double M_ref);
 } // namespace gearfem::analytical::gearbox

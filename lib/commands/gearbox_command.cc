@@ -33,15 +33,7 @@ namespace gearfem::commands
       std::string source = "AGMA 2101-D04 / 908-B89 from the geometry";
       if (study.source == gb::StressSource::table)
         {
-          // The given stresses replace the computed ones in the damage sum (scuffing keeps
-          // the computed geometry and loads).
-          r.stress = gb::scaled_stresses(r.train, in.spectrum, study.reference, study.reference_torque);
-          r.lives = gb::member_lives(r.train, in.spectrum, r.stress, in.materials);
-          r.first_failure = -1;
-          double shortest = analytical::fatigue::infinite_life;
-          for (std::size_t i = 0; i < r.lives.size(); ++i)
-            if (r.lives[i].damage.life_spectra < shortest)
-              shortest = r.lives[i].damage.life_spectra, r.first_failure = int(i);
+          gb::use_reference_stresses(r, in, study.reference, study.reference_torque);
           source = "table (given at " + to_string_g(study.reference_torque) +
                    " N m, sigma_H scaled with sqrt(M), sigma_F with M)";
         }
