@@ -27,6 +27,16 @@ namespace gearfem::analytical::gearbox
       mB = t_B / h_t;
       KB = agma::K_B(mB);
     }
+    /// The input entry prefix of a member: "Sun", "Planet" or "Ring" (parallel: gear 1 is
+    /// entered as the sun, gear 2 as the planet).
+    std::string member_entry(const std::string &member)
+    {
+      if (member == "sun" || member == "gear 1")
+        return "Sun";
+      if (member == "planet" || member == "gear 2")
+        return "Planet";
+      return "Ring";
+    }
   } // namespace
 
   double K_gamma_table(int N)
@@ -60,12 +70,23 @@ namespace gearfem::analytical::gearbox
     const double u = double(z2) / z1;
     g.d_w1 = 2.0 * g.a / (u + sgn);
     const std::string stage = s.name + "/";
-    g.loa = internal ? agma::line_of_action_internal(z1, z2, m, g.alpha, g.r_a1, g.r_a2, g.a) :
-                       agma::line_of_action(z1, z2, m, g.alpha, g.r_a1, g.r_a2, g.a);
+    // A line of action that does not exist, or starts below the pinion's base circle
+    // (involute interference, the real check on the generated geometry), is reported
+    // against the gear's profile shift of this stage.
+    const std::string entry = stage + member_entry(gear) + " profile shift";
+    try
+      {
+        g.loa = internal ? agma::line_of_action_internal(z1, z2, m, g.alpha, g.r_a1, g.r_a2, g.a) :
+                           agma::line_of_action(z1, z2, m, g.alpha, g.r_a1, g.r_a2, g.a);
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(entry, to_string_g(x2), "a value that gives a valid " + name + " mesh", e.what());
+      }
     if (!internal && !(g.loa.C1 > 0.0))
-      throw InputError(stage + name + " tip diameter of " + gear, to_string_g(2e3 * g.r_a2) + " mm",
-                       "contact start C1 > 0 on the line of action",
-                       "involute interference: contact starts below the base circle of the " + pinion);
+      throw InputError(entry, to_string_g(x2), "a value with contact start C1 > 0 on the line of action",
+                       "involute interference: the " + gear + " tip starts contact below the base circle of the " +
+                         pinion);
     if (!(g.loa.contact_ratio >= 1.0))
       throw InputError(stage + name + " contact ratio", to_string_g(g.loa.contact_ratio), ">= 1");
     g.Z_I = internal ? agma::geometry_factor_I_internal(g.loa) : agma::geometry_factor_I(g.loa);

@@ -285,6 +285,13 @@ TEST(Gearbox, BadInputNamesTheParameter)
   expect_named(with([](GearboxInput &x) { x.stages[1].z_planet = 110, x.stages[1].z_ring = 117; }),
                "Stage 2/Ring teeth"); // Z_R < Z_P + 10: internal interference
   expect_named(with([](GearboxInput &x) { x.stages[0].x_ring = -0.5; }), "Stage 1/Ring profile shift"); // coaxiality
+  // x_R = +0.9: Z_R >= Z_P + 10 holds but no internal mesh exists (a_PR < r_b2 - r_b1).
+  expect_named(with([](GearboxInput &x) { x.stages[0].x_ring = 0.9; }), "Stage 1/Ring profile shift");
+  // The real interference check on the line of action: a 20/30 internal pair (unit module)
+  // at a = 5.5 with the ring tip at 14.2, just outside its base circle 14.095, starts
+  // contact at C1 = sqrt(14.2^2 - 14.095^2) - C6 = -1.1 < 0, below the pinion's base circle.
+  expect_named([] { agma::line_of_action_internal(20, 30, 1e-3, 20 * pi / 180, 11e-3, 14.2e-3, 5.5e-3); },
+               "internal interference");
   expect_named(with([](GearboxInput &x) { x.spectrum.torques.clear(), x.spectrum.revolutions.clear(); }),
                "Spectrum/Torques");
   expect_named(with([](GearboxInput &x) { x.spectrum.revolutions[3] = -1; }), "Spectrum/Revolutions");
