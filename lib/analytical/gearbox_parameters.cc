@@ -45,7 +45,7 @@ namespace gearfem::analytical::gearbox
       prm.declare_entry("Fixed member", "ring", Selection("ring|carrier"),
                         "Planetary layout: ring fixed, carrier in, sun out (seed 001), or carrier "
                         "fixed (star), ring in, sun out.");
-      prm.declare_entry("Output member", k == 0 ? "sun" : "sun", Anything(),
+      prm.declare_entry("Output member", "sun", Anything(),
                         "The member that feeds the next stage: sun (planetary) or gear 2 (parallel).");
       prm.declare_entry("Sun teeth", s2 ? "27" : "16", Integer(0), "Z_S (gear 1 of a parallel stage). Units: none.");
       prm.declare_entry("Planet teeth", s2 ? "44" : "28", Integer(0), "Z_P (gear 2 of a parallel stage). Units: none.");
