@@ -66,6 +66,55 @@ namespace gearfem::analytical::agma
     return std::cos(l.phi_r) / ((1.0 / rho1 + 1.0 / rho2) * d);
   }
 
+  LineOfAction line_of_action_internal(int z1, int z2, double m, double phi_n, double ro1,
+                                       double ro2, double a)
+  {
+    require_greater("Gear 1/Number of teeth", z1, 4);
+    require_greater("Internal gear/Number of teeth", z2, z1);
+    require_greater("module", m, 0.0, "m");
+    LineOfAction l;
+    l.mG = double(z2) / z1;
+    l.R1 = 0.5 * z1;
+    l.R2 = l.R1 * l.mG;
+    l.Rb1 = l.R1 * std::cos(phi_n);
+    l.Rb2 = l.Rb1 * l.mG;
+    l.Ro1 = ro1 / m;
+    l.Ro2 = ro2 / m;
+    l.Cr = a / m;
+    const double c = (l.Rb2 - l.Rb1) / l.Cr;
+    if (!(c < 1.0))
+      throw InputError("Internal mesh/Centre distance", to_string_g(a) + " m",
+                       "> difference of base radii " + to_string_g((l.Rb2 - l.Rb1) * m) + " m");
+    if (!(l.Ro2 > l.Rb2))
+      throw InputError("Internal gear/Tip diameter", to_string_g(2 * ro2) + " m",
+                       "> base diameter " + to_string_g(2 * l.Rb2 * m) + " m");
+    l.phi_r = std::acos(c);
+    l.pb = 2.0 * pi * l.Rb1 / z1;
+    l.C6 = l.Cr * std::sin(l.phi_r);
+    l.C1 = std::sqrt(l.Ro2 * l.Ro2 - l.Rb2 * l.Rb2) - l.C6;
+    l.C3 = l.C6 / (l.mG - 1.0);
+    l.C4 = l.C1 + l.pb;
+    l.C5 = std::sqrt(l.Ro1 * l.Ro1 - l.Rb1 * l.Rb1);
+    l.C2 = l.C5 - l.pb;
+    l.contact_ratio = (l.C5 - l.C1) / l.pb;
+    if (!(l.C1 > 0.0))
+      throw InputError("Internal gear/Tip diameter", to_string_g(2 * ro2 * 1e3) + " mm",
+                       "> " + to_string_g(2e3 * m * std::sqrt(l.Rb2 * l.Rb2 + l.C6 * l.C6)) + " mm",
+                       "internal interference: the internal gear's tip starts contact below the "
+                       "pinion's base circle (C1 = " + to_string_g(l.C1) + " module units)");
+    return l;
+  }
+
+  double geometry_factor_I_internal(const LineOfAction &l)
+  {
+    const double rho1 = l.C2, rho2 = l.C6 + rho1;
+    if (!(rho1 > 0.0))
+      throw InputError("AGMA Z_I (internal): LPSTC outside the pinion involute (rho1 = " +
+                       to_string_g(rho1) + " module units)");
+    const double d = 2.0 * l.Cr / (l.mG - 1.0);
+    return std::cos(l.phi_r) / ((1.0 / rho1 - 1.0 / rho2) * d);
+  }
+
   BendingGeometry geometry_factor_J(int n, double x_g, double tan_phi_nW, double phi_n,
                                     double phi_nr, const Tool &t)
   {

@@ -30,6 +30,17 @@ namespace gearfem::analytical::agma
   /// (AGMA 908-B89; seed 001 eqs. 4.3.1-1, -4, -5).
   double geometry_factor_I(const LineOfAction &loa);
 
+  /// Internal mesh (seed 001 sec. 4.3 with the lower signs, eq. 2.2.2-1): gear 2 is the
+  /// internal gear, ro2 its tip (inner) radius [m], a = r_w2 - r_w1 [m];
+  /// phi_r = acos((R_b2 - R_b1)/C_r), C1 = sqrt(R_o2^2 - R_b2^2) - C6, C3 = C6/(m_G - 1).
+  /// Throws InputError when C1 <= 0 (the ring tip cuts the pinion below its base circle:
+  /// involute interference).
+  LineOfAction line_of_action_internal(int z1, int z2, double module, double phi_n, double ro1,
+                                       double ro2, double a);
+  /// Z_I of an internal mesh: cos phi_r/((1/rho1 - 1/rho2) d), rho1 = C2, rho2 = C6 + rho1,
+  /// d = 2 C_r/(m_G - 1) (seed 001 sec. 4.3, lower signs).
+  double geometry_factor_I_internal(const LineOfAction &loa);
+
   /// Generating tool of AGMA 908 (unit module). A hob is a shaper with n_o -> infinity;
   /// the standard (and seed 001) use n_o = 10000.
   struct Tool

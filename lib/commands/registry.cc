@@ -11,6 +11,7 @@ namespace gearfem::commands
   Command solve_command();
   Command calibrate_command();
   Command batch_command();
+  Command gearbox_command();
 
   const std::vector<Command> &registry()
   {
@@ -18,6 +19,7 @@ namespace gearfem::commands
       profile_command(),
       dynamics_command(),
       rate_command(),
+      gearbox_command(),
       mesh_command(),
       solve_command(),
       calibrate_command(),

@@ -1,0 +1,209 @@
+#include "analytical/gearbox_report.h"
+
+#include "base/atomic_file.h"
+#include "base/errors.h"
+#include "base/number.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace gearfem::analytical::gearbox
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    /// A finite number for an output file (throws otherwise: nothing non-finite is written).
+    std::string num(double v, const std::string &file, const std::string &what, int precision = 6)
+    {
+      require_finite_output(v, file, what);
+      std::ostringstream s;
+      s << std::setprecision(precision) << v;
+      return s.str();
+    }
+    /// A life: "no damage" (md) or "" (csv) when infinite.
+    std::string life(double v, const std::string &file, bool csv)
+    {
+      return std::isinf(v) ? (csv ? "" : "no damage") : num(v, file, "life");
+    }
+
+    struct Row
+    {
+      std::string quantity, symbol, clause, unit;
+      double value;
+    };
+    std::vector<Row> mesh_rows(const MeshGeometry &g, const Stage &st, const AgmaFactors &f)
+    {
+      const std::string p = g.pinion, q = g.gear;
+      const std::string sign = g.internal ? " (internal: lower signs)" : "";
+      std::vector<Row> r = {
+        {"working radius of the " + p, "r_w1", "seed 001 eq. 2.1.1-9", "mm", g.r_w1 * 1e3},
+        {"working radius of the " + q, "r_w2", g.internal ? "seed 001 eq. 2.1.2-4" : "seed 001 eq. 2.1.1-9", "mm", g.r_w2 * 1e3},
+        {"tip radius of the " + p, "r_a1", "seed 001 eq. 2.1.1-9 (r_k)", "mm", g.r_a1 * 1e3},
+        {"tip radius of the " + q, "r_a2", g.internal ? "seed 001 sec. 2.1.2 (r_k)" : "seed 001 eq. 2.1.1-9 (r_k)", "mm", g.r_a2 * 1e3},
+        {"centre distance", "a", g.internal ? "seed 001 eq. 2.2.2-1" : "seed 001 eq. 2.2.1-1", "mm", g.a * 1e3},
+        {"operating pitch diameter 2a/(u" + std::string(g.internal ? "-" : "+") + "1)", "d_w1", "2101-D04 (seed 001 sec. 4.1)" + sign, "mm", g.d_w1 * 1e3},
+        {"operating pressure angle", "phi_r", "908-B89 (seed 001 eqs. 4.3-12..19)" + sign, "deg", g.loa.phi_r * 180 / pi},
+        {"start of contact (unit module)", "C1", "908-B89 (seed 001 eqs. 4.3-12..19)" + sign, "-", g.loa.C1},
+        {"LPSTC (unit module)", "C2", "908-B89 (seed 001 eq. 4.3-17)", "-", g.loa.C2},
+        {"pitch point (unit module)", "C3", "908-B89 (seed 001 eq. 4.3-14)" + sign, "-", g.loa.C3},
+        {"HPSTC (unit module)", "C4", "908-B89 (seed 001 eq. 4.3-15)", "-", g.loa.C4},
+        {"end of contact (unit module)", "C5", "908-B89 (seed 001 eqs. 4.3-12..19)", "-", g.loa.C5},
+        {"T1T2 (unit module)", "C6", "908-B89 (seed 001 eqs. 4.3-12..19)", "-", g.loa.C6},
+        {"transverse contact ratio", "m_p", "908-B89 (seed 001 eq. 4.3-19)", "-", g.loa.contact_ratio},
+        {"pitting geometry factor", "Z_I", "908-B89 (seed 001 eq. 4.3.1-1)" + sign, "-", g.Z_I},
+        {"elastic coefficient", "Z_E", "2101-D04 (seed 001 eq. 4.1-2)", "sqrt(MPa)", g.Z_E / 1e3},
+        {"overload factor", "K_o", "2101-D04 (input)", "-", f.K_o},
+        {"dynamic factor", "K_v", "2101-D04 (input)", "-", f.K_v},
+        {"size factor", "K_s", "2101-D04 (input)", "-", f.K_s},
+        {"surface condition factor", "Z_R", "2101-D04 (input)", "-", f.Z_R},
+        {std::string("mesh alignment factor (") + agma::to_string(f.enclosure) + ")", "K_Hma", "2101-D04 (seed 001 eq. 4.1.6-4)", "-", g.K_Hma},
+        {"pinion proportion factor", "K_Hpf", "2101-D04 (seed 001 eqs. 4.1.6-5..7)", "-", g.K_Hpf},
+        {"load distribution factor 1 + K_Hma + K_Hpf", "K_H", "2101-D04 (seed 001 eq. 4.1.6-3)", "-", g.K_H},
+        {"backup ratio of the " + p, "m_B1", "2101-D04 (seed 001 sec. 4.2.1; 0: solid)", "-", g.m_B1},
+        {"rim thickness factor of the " + p, "K_B1", "2101-D04 (seed 001 sec. 4.2.1)", "-", g.K_B1},
+        {"backup ratio of the " + q, "m_B2", "2101-D04 (seed 001 sec. 4.2.1; 0: solid)", "-", g.m_B2},
+        {"rim thickness factor of the " + q, "K_B2", "2101-D04 (seed 001 sec. 4.2.1)", "-", g.K_B2},
+        {"bending geometry factor of the " + p, "Y_J1", "908-B89 (seed 001 eq. 4.3.2-1)", "-", g.Y_J1},
+        {"bending geometry factor of the " + q + (g.internal ? " (ring: not rated)" : ""), "Y_J2", "908-B89 (seed 001 eq. 4.3.2-1)", "-", g.Y_J2},
+        {"load-sharing factor", "K_gamma", "seed 001 table 7.2-1 / input", "-", st.K_gamma},
+        {"zone factor", "Z_H", "6336-2 eq. 10", "-", g.iso.Z_H},
+        {"contact ratio factor", "Z_eps", "6336-2 eq. 19", "-", g.iso.Z_eps},
+        {"single pair contact factor, pinion", "Z_B", "6336-2 eqs. 12, 14" + std::string(g.internal ? " (z2 < 0)" : ""), "-", g.iso.Z_B},
+        {"single pair contact factor, gear", "Z_D", g.internal ? "6336-2 (internal gear: 1)" : "6336-2 eqs. 13, 15", "-", g.iso.Z_D},
+        {"application factor", "K_A", "6336-1 (input)", "-", f.K_A},
+        {"dynamic factor", "K_v,ISO", "6336-1 (input)", "-", f.K_v_iso},
+        {"face load factor", "K_Hbeta", "6336-1 (input); K_Halpha = 1", "-", f.K_Hbeta},
+      };
+      return r;
+    }
+  } // namespace
+
+  void write_markdown(const GearboxInput &in, const GearboxResult &r, const std::string &source,
+                      const std::filesystem::path &file, const std::string &title)
+  {
+    const std::string fs = file.string();
+    std::ostringstream s;
+    s << "# " << title << "\n\n"
+      << "Seed 001 (Siasos, NTUA 2010) system-level procedure: kinematics (eqs. 7.2-1..9), AGMA 2101-D04 / "
+         "908-B89 stresses of every mesh (internal meshes with the lower signs of sec. 4.3), load cycles (table "
+         "8.2-1), Miner damage (eqs. 8.4-1..4) and AGMA 925-A03 scuffing (sec. 4.4, SI units). Stress source: "
+      << source << ".\n\n## Train\n\n| stage | type | i = n_in/n_out | input speed (rpm) | output speed (rpm) | "
+         "input torque at the first bin (N m) | K_gamma |\n|---|---|---|---|---|---|---|\n";
+    const auto n = r.train.speeds();
+    const auto M = r.train.torques(in.spectrum.torques[0]);
+    for (std::size_t k = 0; k < r.train.stages.size(); ++k)
+      {
+        const Stage &st = r.train.stages[k];
+        s << "| " << st.in.name << " | "
+          << (st.in.type == StageType::parallel ? "parallel" : st.in.fixed == Fixed::ring ? "planetary, ring fixed" : "planetary, carrier fixed")
+          << " | " << num(st.ratio, fs, "ratio") << " | " << num(n[k], fs, "speed") << " | " << num(n[k + 1], fs, "speed")
+          << " | " << num(M[k], fs, "torque") << " | " << num(st.K_gamma, fs, "K_gamma") << " |\n";
+      }
+    s << "\nCycles per gearbox-input revolution (table 8.2-1): ";
+    for (std::size_t k = 0; k < r.train.stages.size(); ++k)
+      {
+        const Stage &st = r.train.stages[k];
+        const double q = r.train.input_revolutions(k);
+        s << st.in.name << ": " << (st.in.type == StageType::parallel ? "gear 1 " : "sun ") << num(q * st.cycles_sun, fs, "cycles")
+          << ", " << (st.in.type == StageType::parallel ? "gear 2 " : "planet ") << num(q * st.cycles_planet, fs, "cycles");
+        if (st.in.type == StageType::planetary)
+          s << ", ring " << num(q * st.cycles_ring, fs, "cycles");
+        s << (k + 1 < r.train.stages.size() ? "; " : ".\n");
+      }
+    for (std::size_t k = 0; k < r.train.stages.size(); ++k)
+      for (std::size_t j = 0; j < r.train.stages[k].meshes.size(); ++j)
+        {
+          const Stage &st = r.train.stages[k];
+          const MeshGeometry &g = st.meshes[j];
+          s << "\n## " << st.in.name << ", " << g.name << " mesh (pinion " << g.pinion << ", gear " << g.gear << ")\n\n"
+            << "| quantity | symbol | clause | unit | value |\n|---|---|---|---|---|\n";
+          for (const Row &row : mesh_rows(g, st, in.agma))
+            s << "| " << row.quantity << " | " << row.symbol << " | " << row.clause << " | " << row.unit << " | "
+              << num(row.value, fs, row.symbol) << " |\n";
+          s << "\n| M_in (N m) | sigma_H (MPa) | sigma_F1 (MPa) | sigma_F2 (MPa) | ISO sigma_H1 / sigma_H2 (MPa) | "
+               "theta_fl,max (K) | theta_B,max (C) | h_c,min (um) | lambda_min | P_scuffing | risk |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|\n";
+          for (std::size_t b = 0; b < in.spectrum.torques.size(); ++b)
+            {
+              const MeshStress &m = r.stress[k][j][b];
+              const scuffing::Result &c = r.scuff[k][j][b];
+              s << "| " << num(in.spectrum.torques[b], fs, "torque") << " | " << num(m.sigma_H / 1e6, fs, "sigma_H") << " | "
+                << num(m.sigma_F1 / 1e6, fs, "sigma_F1") << " | " << num(m.sigma_F2 / 1e6, fs, "sigma_F2") << " | "
+                << num(m.sigma_H1_iso / 1e6, fs, "ISO sigma_H1") << " / " << num(m.sigma_H2_iso / 1e6, fs, "ISO sigma_H2") << " | "
+                << num(c.theta_fl_max, fs, "theta_fl") << " | " << num(c.theta_B_max, fs, "theta_B") << " | "
+                << num(c.h_c_min * 1e6, fs, "h_c") << " | " << num(c.lambda_min, fs, "lambda") << " | "
+                << num(c.P, fs, "P", 3) << " | " << c.risk << " |\n";
+            }
+        }
+    s << "\n## Fatigue life (Miner, eqs. 8.4-1..4; spectrum of " << num(in.spectrum.duration_years, fs, "years")
+      << " years)\n\n| stage | member | mode | load | cycles per input rev | D | life (spectra) | life (years) |\n"
+         "|---|---|---|---|---|---|---|---|\n";
+    for (const MemberLife &m : r.lives)
+      s << "| " << m.stage << " | " << m.member << " | " << m.mode << " | " << m.detail << " | "
+        << num(m.cycles_per_revolution, fs, "cycles") << " | " << num(m.damage.D, fs, "D") << " | "
+        << life(m.damage.life_spectra, fs, false) << " | " << life(m.life_years, fs, false) << " |\n";
+    if (r.first_failure >= 0)
+      {
+        const MemberLife &m = r.lives[r.first_failure];
+        s << "\n**First failure:** " << m.stage << " " << m.member << " (" << m.mode << "), after "
+          << num(m.damage.life_spectra, fs, "life") << " spectra = " << num(m.life_years, fs, "life") << " years.\n";
+      }
+    else
+      s << "\n**No member is damaged** by this spectrum.\n";
+    s << "\nScuffing: oil temperature " << num(in.conditions.theta_oil, fs, "theta_oil") << " C, k_sump "
+      << num(in.conditions.k_sump, fs, "k_sump") << ", theta_S "
+      << num(scuffing::scuffing_temperature(in.oil), fs, "theta_S") << " C; mesh speeds relative to the carrier.\n";
+    write_file_atomically(file, s.str());
+  }
+
+  void write_csv(const GearboxInput &in, const GearboxResult &r, const std::filesystem::path &dir)
+  {
+    const std::string f1 = (dir / "gearbox.csv").string(), f2 = (dir / "gearbox_life.csv").string(),
+                      f3 = (dir / "scuffing_path.csv").string();
+    std::ostringstream a, l, p;
+    a << "stage,mesh,input torque [N m],F_t [N],sigma_H [MPa],sigma_F1 [MPa],sigma_F2 [MPa],ISO sigma_H1 [MPa],"
+         "ISO sigma_H2 [MPa],theta_fl_max [K],theta_B_max [C],h_c_min [um],lambda_min [-],P_scuffing [-]\n";
+    // The worst scuffing bin (highest theta_B) for the path file.
+    std::size_t wk = 0, wj = 0, wb = 0;
+    for (std::size_t k = 0; k < r.train.stages.size(); ++k)
+      {
+        const Stage &st = r.train.stages[k];
+        for (std::size_t j = 0; j < st.meshes.size(); ++j)
+          for (std::size_t b = 0; b < in.spectrum.torques.size(); ++b)
+            {
+              const MeshStress &m = r.stress[k][j][b];
+              const scuffing::Result &c = r.scuff[k][j][b];
+              if (c.theta_B_max > r.scuff[wk][wj][wb].theta_B_max)
+                wk = k, wj = j, wb = b;
+              a << st.in.name << "," << st.meshes[j].name << "," << num(in.spectrum.torques[b], f1, "torque") << ","
+                << num(st.tangential_load(r.train.torques(in.spectrum.torques[b])[k]), f1, "F_t", 10) << ","
+                << num(m.sigma_H / 1e6, f1, "sigma_H", 10) << "," << num(m.sigma_F1 / 1e6, f1, "sigma_F1", 10) << ","
+                << num(m.sigma_F2 / 1e6, f1, "sigma_F2", 10) << "," << num(m.sigma_H1_iso / 1e6, f1, "ISO sigma_H1", 10) << ","
+                << num(m.sigma_H2_iso / 1e6, f1, "ISO sigma_H2", 10) << "," << num(c.theta_fl_max, f1, "theta_fl") << ","
+                << num(c.theta_B_max, f1, "theta_B") << "," << num(c.h_c_min * 1e6, f1, "h_c") << ","
+                << num(c.lambda_min, f1, "lambda") << "," << num(c.P, f1, "P") << "\n";
+            }
+      }
+    l << "stage,member,mode,load,cycles per input revolution [-],damage D [-],life [spectra] (empty: no damage),"
+         "life [years] (empty: no damage)\n";
+    for (const MemberLife &m : r.lives)
+      l << m.stage << "," << m.member << "," << m.mode << ",\"" << m.detail << "\"," << num(m.cycles_per_revolution, f2, "cycles", 10)
+        << "," << num(m.damage.D, f2, "D", 10) << "," << life(m.damage.life_spectra, f2, true) << ","
+        << life(m.life_years, f2, true) << "\n";
+    const scuffing::Result &w = r.scuff[wk][wj][wb];
+    p << "# worst scuffing bin: " << r.train.stages[wk].in.name << " " << r.train.stages[wk].meshes[wj].name
+      << ", input torque " << num(in.spectrum.torques[wb], f3, "torque") << " N m\n"
+      << "roll angle [deg],rho1 [mm],rho2 [mm],X_Gamma [-],v_r1 [m/s],v_r2 [m/s],b_H [mm],theta_fl [K],h_c [um],"
+         "lambda [-],theta_B [C]\n";
+    for (const scuffing::PathPoint &q : w.path)
+      p << num(q.roll * 180 / pi, f3, "roll") << "," << num(q.rho1 * 1e3, f3, "rho1") << "," << num(q.rho2 * 1e3, f3, "rho2")
+        << "," << num(q.X, f3, "X") << "," << num(q.v1, f3, "v1") << "," << num(q.v2, f3, "v2") << ","
+        << num(q.b_H * 1e3, f3, "b_H") << "," << num(q.theta_fl, f3, "theta_fl") << "," << num(q.h_c * 1e6, f3, "h_c")
+        << "," << num(q.lambda, f3, "lambda") << "," << num(q.theta_B, f3, "theta_B") << "\n";
+    write_file_atomically(dir / "gearbox.csv", a.str());
+    write_file_atomically(dir / "gearbox_life.csv", l.str());
+    write_file_atomically(dir / "scuffing_path.csv", p.str());
+  }
+} // namespace gearfem::analytical::gearbox

@@ -1,0 +1,84 @@
+// `gearfem gearbox study.prm`: gearbox-level rating (seed 001, Siasos 2010, ch. 7-9) of a
+// train of parallel and planetary stages under a load spectrum: AGMA stresses of every
+// mesh, AGMA 925 scuffing, Miner damage per member and mode, life in spectra and years.
+// Parse, call lib/analytical (gearbox*.h, fatigue.h, scuffing.h), write.
+#include "analytical/gearbox_parameters.h"
+#include "analytical/gearbox_report.h"
+#include "base/errors.h"
+#include "commands/command.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <iomanip>
+
+namespace gearfem::commands
+{
+  namespace
+  {
+    namespace gb = gearfem::analytical::gearbox;
+
+    void run(dealii::ParameterHandler &prm, const RunContext &ctx)
+    {
+      std::ostream &out = *ctx.out;
+      const gb::GearboxStudy study = gb::parse_gearbox_parameters(prm);
+      const gb::GearboxInput &in = study.input;
+      if (ctx.validate_only)
+        {
+          out << "gearbox: " << in.stages.size() << " stages, " << in.spectrum.torques.size()
+              << " spectrum bins, stress source "
+              << (study.source == gb::StressSource::table ? "table" : "AGMA") << "\n";
+          return;
+        }
+      gb::GearboxResult r = gb::analyse(in);
+      std::string source = "AGMA 2101-D04 / 908-B89 from the geometry";
+      if (study.source == gb::StressSource::table)
+        {
+          gb::use_reference_stresses(r, in, study.reference, study.reference_torque);
+          source = "table (given at " + to_string_g(study.reference_torque) +
+                   " N m, sigma_H scaled with sqrt(M), sigma_F with M)";
+        }
+      gb::write_markdown(in, r, source, ctx.output_dir / "gearbox.md",
+                         "Gearbox rating (" + ctx.input_file.filename().string() + ")");
+      gb::write_csv(in, r, ctx.output_dir);
+
+      const auto n = r.train.speeds();
+      out << "output speed " << n.back() << " rpm\n";
+      out << std::setprecision(5);
+      for (const gb::MemberLife &m : r.lives)
+        if (m.damage.D > 0.0)
+          out << m.stage << " " << m.member << " " << m.mode << " (" << m.detail << "): D = " << m.damage.D
+              << ", life " << m.damage.life_spectra << " spectra = " << m.life_years << " years\n";
+      if (r.first_failure >= 0)
+        out << "first failure: " << r.lives[r.first_failure].stage << " " << r.lives[r.first_failure].member
+            << " (" << r.lives[r.first_failure].mode << ")\n";
+      else
+        out << "no member is damaged by this spectrum\n";
+      run_plot_script("plot_gearbox.py", {ctx.output_dir.string()}, ctx.out);
+      out << "wrote " << (ctx.output_dir / "gearbox.md").string()
+          << ", gearbox.csv, gearbox_life.csv, scuffing_path.csv\n";
+    }
+  } // namespace
+
+  Command gearbox_command()
+  {
+    Command c;
+    c.name = "gearbox";
+    c.summary = "Gearbox rating: planetary/parallel stages, load spectrum, Miner life, AGMA 925 scuffing";
+    c.description =
+      "Rates a train of planetary (ring or carrier fixed, sun out) and parallel stages under a\n"
+      "torque spectrum at the input (seed 001, Siasos 2010, ch. 7-9): kinematics and torques,\n"
+      "internal-gear geometry and design checks (equal spacing, Z_R >= Z_P + 10, involute\n"
+      "interference, coaxiality, neighbour clearance), AGMA 2101-D04 / 908-B89 contact and\n"
+      "bending stresses of every mesh (internal meshes with the lower signs), load cycles per\n"
+      "member, Miner damage with the semi-log S-N line or the ISO 6336 life factors, life in\n"
+      "spectra and years, and AGMA 925 scuffing along the path of contact. Writes gearbox.md\n"
+      "(every factor with its clause), gearbox.csv, gearbox_life.csv, scuffing_path.csv and,\n"
+      "with /usr/bin/python3 and matplotlib, gearbox_damage.png and scuffing_path.png.\n\n"
+      "Sample runs:\n"
+      "  gearfem gearbox inputs/seed001_gearbox.prm\n"
+      "  gearfem gearbox inputs/seed001_gearbox_thesis_stresses.prm";
+    c.declare = gb::declare_gearbox_parameters;
+    c.run = run;
+    return c;
+  }
+} // namespace gearfem::commands
