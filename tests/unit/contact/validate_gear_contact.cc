@@ -177,9 +177,14 @@ TEST(GearContactValidation, PenaltyAgainstLagrangeOverTheCycle)
 TEST(GearContactValidation, PressureAgainstHertzAlongThePath)
 {
   const double T = 340;
-  auto in = input(demo, mesh_section(0.05, 0.25, 0.25) + "subsection Solve\n set Number of positions = 20\nend\n");
+  // h_contact 0.025 mm: ~20 nodes across each patch. Until the coast-corner transition
+  // (session 8) this case asked for 0.05 mm, but gmsh's Blossom failed at the coast tip
+  // corners (h_coast / h_contact = 5) and the subdivision fallback halved every boundary
+  // edge, so the recorded figures were at 0.025 mm on the flanks. A true 0.05 mm mesh puts
+  // 10-12 nodes across a patch, and the nodal peak then misses the Hertz peak by up to 3 %.
+  auto in = input(demo, mesh_section(0.025, 0.25, 0.25) + "subsection Solve\n set Number of positions = 20\nend\n");
   auto m  = in.model();
-  std::cout << "\n### Peak pressure against Hertz on the local radii (demo pair, 340 N m, h_contact 0.05 mm)\n\n"
+  std::cout << "\n### Peak pressure against Hertz on the local radii (demo pair, 340 N m, h_contact 0.025 mm)\n\n"
             << "| roll [deg] | pinion tooth | load share | nodes | p_max [MPa] | p_Hertz [MPa] | ratio | "
                "a_fit [mm] | a_Hertz [mm] |\n|---|---|---|---|---|---|---|---|---|\n";
   double worst = 0;
