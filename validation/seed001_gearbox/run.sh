@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Seed 001 (Siasos, NTUA 2010, ch. 9) 150 kW two-stage planetary gearbox (issue 16 sec. 3):
 # runs `gearfem gearbox` on the thesis' tabulated stresses (damage chain) and on gearfem's
-# own AGMA stresses, and prints the figures recorded in validation/RESULTS.md.
+# own AGMA stresses, prints the figures recorded in validation/RESULTS.md, and checks them
+# against the thesis (check.py: PASS/FAIL).
 #   validation/seed001_gearbox/run.sh [gearfem] [output folder]
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -20,3 +21,5 @@ for case in seed001_gearbox_thesis_stresses seed001_gearbox; do
   echo "-- max scuffing probability over all bins and meshes"
   awk -F, 'NR > 1 && $14 > m { m = $14 } END { print m }' "$out/$case/gearbox.csv"
 done
+echo "== checks against the thesis (check.py)"
+/usr/bin/python3 "$here/check.py" "$out"
