@@ -85,18 +85,18 @@ namespace gearfem::commands
       write_file_atomically(ctx.output_dir / "run.json", j.str());
     }
 
-    int run_command(const Command &cmd, int argc, char **argv)
+    /// Command-line options that are not part of the RunContext.
+    struct CliOptions
     {
-      RunContext ctx;
-      RunContext::Outcome outcome;
-      ctx.out     = &std::cout;
-      ctx.outcome = &outcome;
-      std::string print_format;
-      bool print_parameters = false;
-      std::string output_dir_option;
-      for (int i = 0; i < argc; ++i)
-        ctx.command_line += (i ? " " : "") + std::string(argv[i]);
+      bool help = false, print_parameters = false;
+      std::string print_format, output_dir;
+    };
 
+    /// Parse argv[2..] into ctx (flags, arguments) and the returned options; InputError
+    /// names an unknown or malformed option.
+    CliOptions parse_options(const Command &cmd, int argc, char **argv, RunContext &ctx)
+    {
+      CliOptions o;
       for (int i = 2; i < argc; ++i)
         {
           const std::string a = argv[i];
@@ -110,7 +110,8 @@ namespace gearfem::commands
                         << "  --slice K/N                run designs K, K+N, ... only (batch)\n"
                         << "  --merge                    aggregate finished jobs, run nothing (batch)\n"
                         << "  --print-parameters [json|prm]  all parameters with defaults\n";
-              return 0;
+              o.help = true;
+              return o;
             }
           else if (a == "--validate")
             ctx.validate_only = true;
@@ -129,18 +130,18 @@ namespace gearfem::commands
             }
           else if (a == "--print-parameters")
             {
-              print_parameters = true;
-              print_format     = "prm";
+              o.print_parameters = true;
+              o.print_format     = "prm";
               if (i + 1 < argc && argv[i + 1][0] != '-')
-                print_format = argv[++i];
-              if (print_format != "prm" && print_format != "json")
-                throw InputError("--print-parameters", print_format, "{json, prm}");
+                o.print_format = argv[++i];
+              if (o.print_format != "prm" && o.print_format != "json")
+                throw InputError("--print-parameters", o.print_format, "{json, prm}");
             }
           else if (a == "--output-dir")
             {
               if (i + 1 >= argc)
                 throw InputError("--output-dir", "(missing)", "a folder name");
-              output_dir_option = argv[++i];
+              o.output_dir = argv[++i];
             }
           else if (a.size() > 1 && a[0] == '-')
             throw InputError("command-line option", a,
@@ -148,6 +149,58 @@ namespace gearfem::commands
           else
             ctx.arguments.push_back(a);
         }
+
+      return o;
+    }
+
+    /// Read and check the input file of ctx into prm (InputError naming the entry).
+    void read_input(const Command &cmd, dealii::ParameterHandler &prm, RunContext &ctx)
+    {
+      for (const auto &a : ctx.arguments)
+        if (a.size() > 4 && (a.substr(a.size() - 4) == ".prm" || a.substr(a.size() - 5) == ".json"))
+          ctx.input_file = a;
+      if (cmd.needs_input && ctx.input_file.empty())
+        throw InputError("input file", "(none)", "a .prm file",
+                         "usage: gearfem " + cmd.name + " <file.prm>");
+      if (!ctx.input_file.empty() && !std::filesystem::is_regular_file(ctx.input_file))
+        throw InputError("input file", ctx.input_file.string(), "an existing readable file",
+                         "file not found");
+      if (ctx.input_file.empty() || !cmd.parse_input)
+        return;
+      try
+        {
+          // A case file may carry the sections of other commands (demo.prm serves
+          // profile, mesh and solve): check it against every command's parameters, so
+          // that a misspelt entry is still an error, then read this command's part.
+          dealii::ParameterHandler all;
+          for (const auto &other : registry())
+            if (other.declare && other.parse_input)
+              other.declare(all);
+          declare_output(all);
+          all.parse_input(ctx.input_file.string(), "", false, false);
+          prm.parse_input(ctx.input_file.string(), "", true, false);
+          // parse_input() does not match a value containing '{' against its pattern,
+          // and Patterns::Double accepts subnormal numbers that get_double() refuses
+          // (see params/checked.h): check every entry strictly, naming "Section/Entry".
+          params::check_entries(all);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError("in " + ctx.input_file.string() + ": " + params::exception_text(e));
+        }
+    }
+
+    int run_command(const Command &cmd, int argc, char **argv)
+    {
+      RunContext ctx;
+      RunContext::Outcome outcome;
+      ctx.out     = &std::cout;
+      ctx.outcome = &outcome;
+      for (int i = 0; i < argc; ++i)
+        ctx.command_line += (i ? " " : "") + std::string(argv[i]);
+      const CliOptions opt = parse_options(cmd, argc, argv, ctx);
+      if (opt.help)
+        return 0;
 
       if (ctx.resume && cmd.name != "solve")
         throw InputError("--resume", cmd.name, "the solve command", "only `gearfem solve` keeps a journal to resume");
@@ -157,59 +210,21 @@ namespace gearfem::commands
       cmd.declare(prm);
       declare_output(prm);
 
-      if (print_parameters)
+      if (opt.print_parameters)
         {
-          prm.print_parameters(std::cout, print_format == "json" ?
+          prm.print_parameters(std::cout, opt.print_format == "json" ?
                                             dealii::ParameterHandler::JSON :
                                             dealii::ParameterHandler::PRM);
           return 0;
         }
 
-      for (const auto &a : ctx.arguments)
-        if (a.size() > 4 && (a.substr(a.size() - 4) == ".prm" || a.substr(a.size() - 5) == ".json"))
-          ctx.input_file = a;
-      if (cmd.needs_input && ctx.input_file.empty())
-        throw InputError("input file", "(none)", "a .prm file",
-                         "usage: gearfem " + cmd.name + " <file.prm>");
-      if (!ctx.input_file.empty())
-        {
-          if (!std::filesystem::is_regular_file(ctx.input_file))
-            throw InputError("input file", ctx.input_file.string(), "an existing readable file",
-                             "file not found");
-        }
-      if (!ctx.input_file.empty() && cmd.parse_input)
-        {
-          if (!std::filesystem::is_regular_file(ctx.input_file))
-            throw InputError("input file", ctx.input_file.string(), "an existing readable file",
-                             "file not found");
-          try
-            {
-              // A case file may carry the sections of other commands (demo.prm serves
-              // profile, mesh and solve): check it against every command's parameters, so
-              // that a misspelt entry is still an error, then read this command's part.
-              dealii::ParameterHandler all;
-              for (const auto &other : registry())
-                if (other.declare && other.parse_input)
-                  other.declare(all);
-              declare_output(all);
-              all.parse_input(ctx.input_file.string(), "", false, false);
-              prm.parse_input(ctx.input_file.string(), "", true, false);
-              // parse_input() does not match a value containing '{' against its pattern,
-              // and Patterns::Double accepts subnormal numbers that get_double() refuses
-              // (see params/checked.h): check every entry strictly, naming "Section/Entry".
-              params::check_entries(all);
-            }
-          catch (const dealii::ExceptionBase &e)
-            {
-              throw InputError("in " + ctx.input_file.string() + ": " + params::exception_text(e));
-            }
-        }
+      read_input(cmd, prm, ctx);
 
       prm.enter_subsection("Output");
       const std::string prm_dir = prm.get("Directory");
       prm.leave_subsection();
-      if (!output_dir_option.empty())
-        ctx.output_dir = output_dir_option;
+      if (!opt.output_dir.empty())
+        ctx.output_dir = opt.output_dir;
       else if (!prm_dir.empty())
         ctx.output_dir = prm_dir;
       else
