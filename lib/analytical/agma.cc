@@ -25,21 +25,32 @@ namespace gearfem::analytical::agma
     }
   } // namespace
 
+  namespace
+  {
+    /// Gear ratio, pitch, base and tip radii and centre distance in module units (AGMA
+    /// 908 notation), shared by the external and internal lines of action.
+    LineOfAction pair_radii(int z1, int z2, double m, double phi_n, double ro1, double ro2, double a)
+    {
+      LineOfAction l;
+      l.mG = double(z2) / z1;
+      l.R1 = 0.5 * z1;
+      l.R2 = l.R1 * l.mG;
+      l.Rb1 = l.R1 * std::cos(phi_n);
+      l.Rb2 = l.Rb1 * l.mG;
+      l.Ro1 = ro1 / m;
+      l.Ro2 = ro2 / m;
+      l.Cr = a / m;
+      return l;
+    }
+  } // namespace
+
   LineOfAction line_of_action(int z1, int z2, double m, double phi_n, double ro1, double ro2,
                               double a)
   {
     require_greater("Gear 1/Number of teeth", z1, 4);
     require_greater("Gear 2/Number of teeth", z2, 4);
     require_greater("module", m, 0.0, "m");
-    LineOfAction l;
-    l.mG = double(z2) / z1;
-    l.R1 = 0.5 * z1;
-    l.R2 = l.R1 * l.mG;
-    l.Rb1 = l.R1 * std::cos(phi_n);
-    l.Rb2 = l.Rb1 * l.mG;
-    l.Ro1 = ro1 / m;
-    l.Ro2 = ro2 / m;
-    l.Cr = a / m;
+    LineOfAction l = pair_radii(z1, z2, m, phi_n, ro1, ro2, a);
     const double c = (l.Rb1 + l.Rb2) / l.Cr;
     if (!(c < 1.0))
       throw InputError("Pair/Centre distance", to_string_g(a) + " m",
@@ -72,15 +83,7 @@ namespace gearfem::analytical::agma
     require_greater("Gear 1/Number of teeth", z1, 4);
     require_greater("Internal gear/Number of teeth", z2, z1);
     require_greater("module", m, 0.0, "m");
-    LineOfAction l;
-    l.mG = double(z2) / z1;
-    l.R1 = 0.5 * z1;
-    l.R2 = l.R1 * l.mG;
-    l.Rb1 = l.R1 * std::cos(phi_n);
-    l.Rb2 = l.Rb1 * l.mG;
-    l.Ro1 = ro1 / m;
-    l.Ro2 = ro2 / m;
-    l.Cr = a / m;
+    LineOfAction l = pair_radii(z1, z2, m, phi_n, ro1, ro2, a);
     const double c = (l.Rb2 - l.Rb1) / l.Cr;
     if (!(c < 1.0))
       throw InputError("Internal mesh/Centre distance", to_string_g(a) + " m",
