@@ -3,6 +3,7 @@
 #include "base/atomic_file.h"
 #include "base/errors.h"
 #include "base/number.h"
+#include "contact/gear_contact.h"
 #include "contact/parameters.h"
 #include "io/journal.h"
 #include "io/solve_results.h"
@@ -79,7 +80,7 @@ namespace gearfem::batch
     std::ostringstream s;
     s << "gearfem-batch-job 1\nid " << r.id << "\nkey " << r.key << "\nstatus " << r.status << "\nmessage "
       << one_line(r.message) << "\nwall_time " << exact(r.wall_time) << "\ncontact_ratio " << exact(r.contact_ratio)
-      << "\ntorques";
+      << "\nshared_model " << (r.shared_model ? 1 : 0) << "\ntorques";
     for (const double t : r.torques)
       s << " " << exact(t);
     s << "\nend\n";
@@ -113,6 +114,8 @@ namespace gearfem::batch
           r.wall_time = std::strtod(value.c_str(), nullptr);
         else if (name == "contact_ratio")
           r.contact_ratio = std::strtod(value.c_str(), nullptr);
+        else if (name == "shared_model")
+          r.shared_model = value == "1";
         else if (name == "torques")
           {
             std::istringstream v(value);
@@ -133,6 +136,97 @@ namespace gearfem::batch
     auto prm = design_handler(study, i);
     return io::content_hash(design_parameters(*prm));
   }
+
+  std::string model_key(const std::string &text)
+  {
+    // ShortPRM text: "subsection X" / "  set a = b" / "end", nested by two spaces.
+    std::istringstream in(text);
+    std::vector<std::string> lines;
+    bool gap = false;
+    for (std::string line; std::getline(in, line);)
+      {
+        lines.push_back(line);
+        const auto a = line.find_first_not_of(' ');
+        if (a != std::string::npos && line.compare(a, 18, "set Micro-geometry") == 0 &&
+            line.substr(line.find('=') + 1).find("gap") != std::string::npos)
+          gap = true;
+      }
+    std::string kept, top;
+    for (const auto &line : lines)
+      {
+        if (line.rfind("subsection ", 0) == 0)
+          top = line.substr(11);
+        const bool sweep_only = top == "Solve" || top == "Post" || top == "Batch";
+        const auto a          = line.find_first_not_of(' ');
+        const bool relief     = gap && (top == "Gear 1" || top == "Gear 2") && a != std::string::npos &&
+                            line.compare(a, 14, "set Tip relief") == 0;
+        if (!sweep_only && !relief)
+          kept += line + "\n";
+        if (line == "end")
+          top.clear();
+      }
+    return io::content_hash(kept);
+  }
+
+  std::string model_key(const Study &study, std::size_t i)
+  {
+    auto prm = design_handler(study, i);
+    return model_key(design_parameters(*prm));
+  }
+
+  struct ModelCache::Impl
+  {
+    std::string key;
+    /// The input the model was built from (its meshed pair) and the one it now serves.
+    std::unique_ptr<contact::GearContactInput> base, current;
+    std::unique_ptr<contact::GearContactModel> model;
+    std::size_t builds = 0, reuses = 0;
+  };
+
+  ModelCache::ModelCache()
+    : impl_(std::make_unique<Impl>())
+  {}
+  ModelCache::~ModelCache() = default;
+  std::size_t ModelCache::builds() const { return impl_->builds; }
+  std::size_t ModelCache::reuses() const { return impl_->reuses; }
+  const std::string &ModelCache::key() const { return impl_->key; }
+
+  namespace
+  {
+    /// The model of a job: the cached one re-targeted when the model keys match, else a
+    /// new one (then cached). Without a cache, a new one owned by `own`.
+    contact::GearContactModel &job_model(ModelCache *cache, const std::string &key,
+                                         std::unique_ptr<contact::GearContactInput> &in,
+                                         std::unique_ptr<contact::GearContactModel> &own, bool &shared)
+    {
+      // Without a cache the caller keeps `in`; with one, the cache takes it (the model
+      // points into it).
+      shared = false;
+      if (!cache)
+        {
+          own = in->model();
+          return *own;
+        }
+      auto &c = cache->impl();
+      if (c.model && c.key == key)
+        {
+          if (c.base->contact.micro_geometry_as_gap)
+            c.model->set_micro_geometry(*in->pair);
+          c.current = std::move(in);
+          ++c.reuses;
+          shared = true;
+          return *c.model;
+        }
+      c.model.reset(); // free the old factorisation before the new one is built
+      c.key.clear();
+      c.current.reset();
+      c.base  = std::move(in);
+      c.model = c.base->model();
+      c.key   = key;
+      ++c.builds;
+      return *c.model;
+    }
+  } // namespace
 
   bool job_finished(const std::filesystem::path &jobs_root, const std::string &id, const std::string &key)
   {
@@ -174,7 +268,7 @@ namespace gearfem::batch
     return rec;
   }
 
-  JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root)
+  JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root, ModelCache *cache)
   {
     const auto t0  = std::chrono::steady_clock::now();
     const auto dir = jobs_root / study.designs.designs[i].id;
@@ -191,7 +285,8 @@ namespace gearfem::batch
         std::error_code ec;
         std::filesystem::remove(dir / job_record_file, ec); // a re-run replaces the old record
 
-        const contact::GearContactInput in = contact::parse_gear_contact_input(*prm);
+        auto input = std::make_unique<contact::GearContactInput>(contact::parse_gear_contact_input(*prm));
+        const contact::GearContactInput &in = *input;
         post::SolveRunOptions opt;
         opt.post          = post::parse_post_parameters(*prm);
         rec.contact_ratio = in.pair->contact_ratio();
@@ -199,8 +294,9 @@ namespace gearfem::batch
         opt.input_hash    = rec.key;
         opt.input_name    = job_parameters_file;
         opt.resume        = journal_matches(dir, rec.key);
-        auto model        = in.model();
-        const post::SolveRunResult r = post::run_solve(*model, in, opt);
+        std::unique_ptr<contact::GearContactModel> own;
+        auto &model = job_model(cache, model_key(text), input, own, rec.shared_model);
+        const post::SolveRunResult r = post::run_solve(model, in, opt);
         if (r.failure.empty())
           rec.status = "ok";
         else

@@ -11,6 +11,7 @@
 #include "batch/study.h"
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ namespace gearfem::batch
     double wall_time     = 0;     ///< [s]
     double contact_ratio = 0;     ///< transverse contact ratio of the design's pair [-]
     std::vector<double> torques;  ///< the design's torques [N m] (rows of the aggregate)
+    /// The job re-used the factorised model of an earlier job of its rank (ModelCache): its
+    /// wall time has no mesh and factorisation in it.
+    bool shared_model = false;
     bool ok() const { return status == "ok"; }
   };
 
@@ -44,9 +48,42 @@ namespace gearfem::batch
   /// key, and a readable results.h5.
   bool job_finished(const std::filesystem::path &jobs_root, const std::string &id, const std::string &key);
 
+  /// What a job's factorised model depends on, as a hash of the design's parameters
+  /// (design.prm text) without the sections that only drive the sweep or its evaluation
+  /// (Solve, Post) and, with `Contact/Micro-geometry = gap`, without the tip-relief entries
+  /// of both gears. Two designs with the same model key can share one mesh, factorisation
+  /// and flexibility cache (GearContactModel::set_micro_geometry).
+  std::string model_key(const std::string &design_parameters_text);
+  /// The model key of design `i` (throws like design_handler).
+  std::string model_key(const Study &study, std::size_t i);
+
+  /// One rank's factorised model, kept from job to job: a job whose model key equals the
+  /// cached one re-targets the cached model to its micro-geometry (or only re-runs the
+  /// sweep) instead of meshing and factorising again. The results equal those of a fresh
+  /// model (tests/unit/contact/test_micro_geometry.cc, tests/regression/batch_checks.sh).
+  class ModelCache
+  {
+  public:
+    ModelCache();
+    ~ModelCache();
+    ModelCache(const ModelCache &) = delete;
+    ModelCache &operator=(const ModelCache &) = delete;
+    std::size_t builds() const; ///< models built (mesh + factorisation)
+    std::size_t reuses() const; ///< jobs that re-used the cached model
+    const std::string &key() const; ///< model key of the cached model ("" when empty)
+    struct Impl;
+    Impl &impl() { return *impl_; }
+
+  private:
+    std::unique_ptr<Impl> impl_;
+  };
+
   /// Run design `i` into jobs_root/<id> (created). A journal of the same key left by a
-  /// killed run is resumed. Never throws; the record is also written to job.txt.
-  JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root);
+  /// killed run is resumed. With a cache, a model of the same model key is re-used and the
+  /// job's model is kept for the next job. Never throws; the record is also written to
+  /// job.txt.
+  JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
+                    ModelCache *cache = nullptr);
 
   /// Record design `i` as failed with `message` without running it (an invalid design
   /// found by check_designs).

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <set>
 #include <mutex>
 #include <thread>
 
@@ -22,22 +23,50 @@ namespace gearfem::batch
     constexpr int tag_ready = 181, tag_job = 182;
 
     /// The jobs not yet handed out; shared by rank 0's manager thread and its own worker.
+    /// A rank that asks for a job gets the next one of the model key of its last job if one
+    /// is left (it re-uses its factorised model, ModelCache), else the next one in order.
     class Queue
     {
     public:
-      explicit Queue(std::vector<int> jobs)
-        : jobs_(std::move(jobs))
+      Queue(std::vector<int> jobs, std::vector<std::string> keys)
+        : jobs_(std::move(jobs)), keys_(std::move(keys)), taken_(jobs_.size(), false)
       {}
-      int take()
+      /// Next job for a rank whose cached model has key `key` ("" none); -1 when done.
+      int take(const std::string &key)
       {
         std::lock_guard<std::mutex> lock(m_);
-        return next_ < jobs_.size() ? jobs_[next_++] : -1;
+        std::size_t pick = jobs_.size();
+        for (std::size_t k = first_; k < jobs_.size() && !key.empty(); ++k)
+          if (!taken_[k] && keys_[k] == key)
+            {
+              pick = k;
+              break;
+            }
+        if (pick == jobs_.size())
+          while (first_ < jobs_.size() && taken_[first_])
+            ++first_;
+        if (pick == jobs_.size())
+          pick = first_;
+        if (pick == jobs_.size())
+          return -1;
+        taken_[pick] = true;
+        return jobs_[pick];
+      }
+      /// Model key of job `job` ("" if unknown).
+      std::string key_of(int job) const
+      {
+        for (std::size_t k = 0; k < jobs_.size(); ++k)
+          if (jobs_[k] == job)
+            return keys_[k];
+        return "";
       }
 
     private:
       std::mutex m_;
       std::vector<int> jobs_;
-      std::size_t next_ = 0;
+      std::vector<std::string> keys_;
+      std::vector<bool> taken_;
+      std::size_t first_ = 0;
     };
 
     /// Rank 0's progress lines: jobs done/total, failures, elapsed time, ETA.
@@ -47,7 +76,7 @@ namespace gearfem::batch
       Reporter(std::ostream *out, const Study &s, std::filesystem::path jobs_root, std::size_t total)
         : out_(out), study_(s), root_(std::move(jobs_root)), total_(total), start_(std::chrono::steady_clock::now())
       {}
-      void finished(int job, bool ok, int rank, double wall)
+      void finished(int job, bool ok, int rank, double wall, bool shared)
       {
         std::lock_guard<std::mutex> lock(m_);
         ++done_;
@@ -58,8 +87,9 @@ namespace gearfem::batch
         const double eta = t / double(done_) * double(total_ - done_);
         const std::string &id = study_.designs.designs[std::size_t(job)].id;
         char buf[256];
-        std::snprintf(buf, sizeof buf, "batch: job %zu/%zu done (%s, rank %d, %.1f s, %s), failures %zu, elapsed %.1f s, ETA %.1f s",
-                      done_, total_, id.c_str(), rank, wall, ok ? "ok" : "FAILED", failed_, t, eta);
+        std::snprintf(buf, sizeof buf, "batch: job %zu/%zu done (%s, rank %d, %.1f s%s, %s), failures %zu, elapsed %.1f s, ETA %.1f s",
+                      done_, total_, id.c_str(), rank, wall, shared ? ", model re-used" : "", ok ? "ok" : "FAILED",
+                      failed_, t, eta);
         *out_ << buf << std::endl;
         if (!ok)
           {
@@ -81,9 +111,10 @@ namespace gearfem::batch
     /// Rank 0: the manager thread (if there are other ranks) and, if the MPI library allows
     /// it, a worker in the main thread.
     void manage(const Study &study, const MpiSession &mpi, const std::filesystem::path &root,
-                const std::vector<int> &todo, Reporter &reporter)
+                const std::vector<int> &todo, const std::vector<std::string> &keys, Reporter &reporter)
     {
-      Queue queue(todo);
+      Queue queue(todo, keys);
+      std::map<int, std::string> rank_key; // model key of each rank's last job
       const bool local_worker = mpi.size() == 1 || mpi.thread_multiple();
       if (local_worker)
         fem::initialize_petsc(); // not concurrently with the manager thread's MPI calls
@@ -101,11 +132,13 @@ namespace gearfem::batch
                   std::this_thread::sleep_for(std::chrono::milliseconds(2));
                   continue;
                 }
-              double msg[3];
-              MPI_Recv(msg, 3, MPI_DOUBLE, st.MPI_SOURCE, tag_ready, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+              double msg[4];
+              MPI_Recv(msg, 4, MPI_DOUBLE, st.MPI_SOURCE, tag_ready, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
               if (msg[0] >= 0)
-                reporter.finished(int(msg[0]), msg[1] > 0, st.MPI_SOURCE, msg[2]);
-              int next = queue.take();
+                reporter.finished(int(msg[0]), msg[1] > 0, st.MPI_SOURCE, msg[2], msg[3] > 0);
+              int next = queue.take(rank_key[st.MPI_SOURCE]);
+              if (next >= 0)
+                rank_key[st.MPI_SOURCE] = queue.key_of(next);
               MPI_Send(&next, 1, MPI_INT, st.MPI_SOURCE, tag_job, MPI_COMM_WORLD);
               if (next < 0)
                 --active;
@@ -115,10 +148,13 @@ namespace gearfem::batch
       if (local_worker)
         try
           {
-            for (int j = queue.take(); j >= 0; j = queue.take())
+            ModelCache cache;
+            std::string key;
+            for (int j = queue.take(key); j >= 0; j = queue.take(key))
               {
-                const JobRecord rec = run_job(study, std::size_t(j), root);
-                reporter.finished(j, rec.ok(), 0, rec.wall_time);
+                key                  = queue.key_of(j);
+                const JobRecord rec = run_job(study, std::size_t(j), root, &cache);
+                reporter.finished(j, rec.ok(), 0, rec.wall_time, rec.shared_model);
               }
           }
         catch (...)
@@ -133,16 +169,17 @@ namespace gearfem::batch
 
     void work(const Study &study, const std::filesystem::path &root)
     {
-      double msg[3] = {-1, 0, 0};
+      double msg[4] = {-1, 0, 0, 0};
+      ModelCache cache;
       while (true)
         {
-          MPI_Send(msg, 3, MPI_DOUBLE, 0, tag_ready, MPI_COMM_WORLD);
+          MPI_Send(msg, 4, MPI_DOUBLE, 0, tag_ready, MPI_COMM_WORLD);
           int job = -1;
           MPI_Recv(&job, 1, MPI_INT, 0, tag_job, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
           if (job < 0)
             return;
-          const JobRecord rec = run_job(study, std::size_t(job), root);
-          msg[0] = job, msg[1] = rec.ok() ? 1 : 0, msg[2] = rec.wall_time;
+          const JobRecord rec = run_job(study, std::size_t(job), root, &cache);
+          msg[0] = job, msg[1] = rec.ok() ? 1 : 0, msg[2] = rec.wall_time, msg[3] = rec.shared_model ? 1 : 0;
         }
     }
 
@@ -200,6 +237,7 @@ namespace gearfem::batch
       r.mine = r.designs;
     const auto root = o.output_dir / jobs_folder;
     std::vector<int> todo;
+    std::vector<std::string> keys; // model key of each job to run
     std::ostream *out = mpi.rank() == 0 ? o.out : nullptr;
     int plan_error    = 0;
     std::string plan_message;
@@ -226,12 +264,15 @@ namespace gearfem::batch
               else if (job_finished(root, d.id, job_key(study, i)))
                 ++r.skipped;
               else
-                todo.push_back(int(i));
+                {
+                  todo.push_back(int(i));
+                  keys.push_back(model_key(study, i));
+                }
             }
           if (out)
             *out << "batch: " << r.designs << " designs" << (o.slices > 1 ? ", slice " + std::to_string(o.slice) + "/" + std::to_string(o.slices) + " holds " + std::to_string(r.mine) : std::string())
                  << "; " << r.skipped << " finished before (skipped), " << r.invalid << " invalid, " << todo.size()
-                 << " jobs to run on " << mpi.size() << " rank" << (mpi.size() > 1 ? "s" : "")
+                 << " jobs (" << std::set<std::string>(keys.begin(), keys.end()).size() << " distinct models) to run on " << mpi.size() << " rank" << (mpi.size() > 1 ? "s" : "")
                  << (mpi.size() == 1 ? "" : mpi.thread_multiple() ? " (rank 0 manages and works)" : " (rank 0 only manages: the MPI library has no MPI_THREAD_MULTIPLE)")
                  << std::endl;
         }
@@ -258,7 +299,7 @@ namespace gearfem::batch
           try
             {
               Reporter reporter(out, study, root, todo.size());
-              manage(study, mpi, root, todo, reporter);
+              manage(study, mpi, root, todo, keys, reporter);
               r.ran = todo.size();
             }
           catch (...)

@@ -13,6 +13,10 @@
 // compliance) is a large part of its cost, and splitting would repeat it on every rank and
 // break the warm start from one position to the next (docs/batch.md).
 //
+// A rank keeps the factorised model of its last job (ModelCache) and is handed, when one is
+// left, a job of the same model key (designs that differ only in Solve/Post, or only in tip
+// relief with Contact/Micro-geometry = gap), which then re-uses that model.
+//
 // Each job runs the serial chain on its own (MPI_COMM_SELF; PETSc's world is COMM_SELF).
 #include "batch/aggregate.h"
 #include "batch/study.h"

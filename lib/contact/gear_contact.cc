@@ -160,15 +160,50 @@ namespace gearfem::contact
     Drive drive;
     drive.kind = Drive::Kind::rotation;
     solver_    = std::make_unique<TwoBodyContact>(*surfaces_[0], *surfaces_[1], options_, drive);
-    if (options_.micro_geometry_as_gap)
-      for (int i = 1; i <= 2; ++i)
-        if (pair.gear(i).parameters().relief.kind != geometry::TipRelief::Kind::none)
-          {
-            // The relief is a function of the radius (docs/geometry.md); the body frame is
-            // centred on the gear axis.
-            const geometry::ToothProfile *tooth = &pair.gear(i);
-            solver_->set_gap_modification(i, [tooth](const Vec2 &x) { return tooth->relief_at_radius(x.norm()); });
-          }
+    apply_micro_geometry();
+  }
+
+  void GearContactModel::apply_micro_geometry()
+  {
+    for (int i = 1; i <= 2; ++i)
+      {
+        const geometry::ToothProfile *tooth = &pair_->gear(i);
+        if (options_.micro_geometry_as_gap && tooth->parameters().relief.kind != geometry::TipRelief::Kind::none)
+          // The relief is a function of the radius (docs/geometry.md); the body frame is
+          // centred on the gear axis.
+          solver_->set_gap_modification(i, [tooth](const Vec2 &x) { return tooth->relief_at_radius(x.norm()); });
+        else
+          solver_->set_gap_modification(i, nullptr);
+      }
+  }
+
+  void GearContactModel::set_micro_geometry(const geometry::GearPair &pair)
+  {
+    if (!options_.micro_geometry_as_gap)
+      throw InputError("Contact/Micro-geometry", "geometry",
+                       "gap (a model re-targeted to another micro-geometry applies it as a gap modification)");
+    // The macro-geometry the bodies were meshed from: what a relief does not change.
+    auto same = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(a) + std::abs(b)); };
+    const auto &old = *pair_;
+    std::string differs;
+    if (!same(pair.center_distance(), old.center_distance()))
+      differs = "centre distance";
+    for (int i = 1; i <= 2 && differs.empty(); ++i)
+      {
+        const auto &a = pair.gear(i), &b = old.gear(i);
+        const auto &ra = a.radii(), &rb = b.radii();
+        if (a.teeth() != b.teeth() || !same(ra.tip, rb.tip) || !same(ra.root, rb.root) || !same(ra.base, rb.base) ||
+            !same(ra.reference, rb.reference) || !same(a.parameters().face_width, b.parameters().face_width) ||
+            !same(a.parameters().profile_shift, b.parameters().profile_shift) ||
+            !same(a.parameters().thickness_allowance, b.parameters().thickness_allowance) ||
+            !same(a.parameters().rack.module, b.parameters().rack.module))
+          differs = "gear " + std::to_string(i) + " (teeth, module, radii, shift, thickness or face width)";
+      }
+    if (!differs.empty())
+      throw InputError("micro-geometry variant", differs + " differs from the meshed design",
+                       "a design that differs only in tip relief (Contact/Micro-geometry = gap)");
+    pair_ = &pair;
+    apply_micro_geometry();
   }
 
   GearContactModel::~GearContactModel() = default;

@@ -75,6 +75,15 @@ namespace gearfem::contact
                      const ContactOptions &options, const geometry::GearPair *mesh_pair = nullptr);
     ~GearContactModel();
 
+    /// Re-target the model to `pair`, a design that differs from the current one only in
+    /// micro-geometry (tip relief): its reliefs become the gap modifications, and the bodies,
+    /// their factorisations and the cached flexibility columns are kept. Requires
+    /// `options.micro_geometry_as_gap` and the same macro-geometry (teeth, module, pressure
+    /// angle, shifts, tip radii and centre distance; InputError otherwise). `pair` must
+    /// outlive the model or the next call. The solution of a position does not depend on
+    /// what was solved before, so the results equal those of a model built for `pair`.
+    void set_micro_geometry(const geometry::GearPair &pair);
+
     /// Solve position phi1 [rad] at pinion torque T1 [N m] (> 0), warm-started from the
     /// converged solution `warm` of a neighbouring position (may be null).
     ContactState solve(double phi1, double torque, const ContactSolution *warm = nullptr);
@@ -120,6 +129,8 @@ namespace gearfem::contact
     /// `normal_force` [N] sizes the corner reach of the scene.
     ContactState timed_solve(double phi1, double normal_force, Control control, double value,
                              const ContactSolution *warm);
+    /// The tip reliefs of pair_ as gap modifications (micro_geometry_as_gap), else none.
+    void apply_micro_geometry();
     const geometry::GearPair *pair_;
     std::unique_ptr<fem::ElasticBody> bodies_[2];
     std::unique_ptr<ContactSurface> surfaces_[2];

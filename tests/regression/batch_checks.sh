@@ -12,6 +12,10 @@
 #   batch_checks.sh failure GEARFEM SRC_DIR  an invalid design and a failing solve are recorded
 #                                            in the status column, the good design completes,
 #                                            exit status 4; --validate lists the invalid one
+#   batch_checks.sh shared  GEARFEM SRC_DIR  with Contact/Micro-geometry = gap, designs that differ
+#                                            only in tip relief share one factorised model (job.txt
+#                                            shared_model), and each job's sweep equals `gearfem
+#                                            solve` of its design.prm (a fresh model) to 1e-10
 #   batch_checks.sh bad     GEARFEM SRC_DIR  unknown parameter path, malformed row, value that
 #                                            is not a number: exit 2 naming column and row,
 #                                            before any job (no jobs folder), also under mpirun
@@ -201,6 +205,43 @@ PY
     [ $rc -eq 2 ] || fail "--validate: exit status $rc (expected 2)"
     grep -q "1 of 3 designs are invalid" "$work/v.log" || fail "--validate does not count the invalid design"
     grep -q "design interfering (row 5 of" "$work/v.log" || fail "--validate does not name the design and its row"
+    ;;
+  shared)
+    study relief_designs.csv
+    printf 'subsection Contact\n  set Micro-geometry = gap\nend\n' >> "$work/study.prm"
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/log" 2>&1 ||
+      { cat "$work/log"; fail "gap-route batch failed"; }
+    cat "$work/log"
+    grep -q "4 jobs (2 distinct models)" "$work/log" || fail "the plan does not count 2 distinct models"
+    for j in none soft; do grep -q "^shared_model 0" "$work/out/jobs/$j/job.txt" || fail "$j did not build its model"; done
+    for j in short long; do grep -q "^shared_model 1" "$work/out/jobs/$j/job.txt" || fail "$j did not re-use the model of 'none'"; done
+    for j in none short long soft; do
+      "$gearfem" solve "$work/out/jobs/$j/design.prm" --output-dir "$work/solo_$j" > "$work/solo_$j.log" 2>&1 ||
+        { cat "$work/solo_$j.log"; fail "solve of $j failed"; }
+    done
+    /usr/bin/python3 - "$work" <<'PY' || fail "a job on a re-used model differs from a fresh solve"
+import csv, sys
+w = sys.argv[1]
+def rows(path):
+    r = list(csv.reader(open(path)))
+    return r[0], r[1:]
+ste = {}
+for j in ("none", "short", "long", "soft"):
+    h, a = rows(f"{w}/out/jobs/{j}/sweep.csv")
+    h2, b = rows(f"{w}/solo_{j}/sweep.csv")
+    assert h == h2 and len(a) == len(b) == 10, (j, len(a), len(b))
+    t = h.index("time [s]")
+    for x, y in zip(a, b):
+        for i, (u, v) in enumerate(zip(x, y)):
+            if i != t:
+                assert abs(float(u) - float(v)) <= 1e-10 * max(1.0, abs(float(u))), (j, h[i], u, v)
+    ste[j] = [float(r[h.index("STE [um]")]) for r in a]
+# The relief changes the STE where it acts (the re-targeting is not a no-op), and the longer
+# relief at the same amount removes more material, so its mean STE is at least that of the short.
+assert max(abs(u - v) for u, v in zip(ste["none"], ste["long"])) > 0.1, (ste["none"], ste["long"])
+assert sum(ste["long"]) >= sum(ste["short"]) >= sum(ste["none"]), ste
+print("re-used models: short and long equal fresh solves of their design.prm to 1e-10")
+PY
     ;;
   bad)
     check() { # TABLE EXPECT...: exit 2, each EXPECT in stderr, no job started
