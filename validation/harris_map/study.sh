@@ -1,9 +1,16 @@
 #!/usr/bin/env bash
 # Harris map (issue 18, section 4) of inputs/harris_map.prm with `gearfem batch`, then
 # scripts/plot_batch.py: harris_map.png, design_space.png and the table of minima.
-#   study.sh full    [NP]  the study as written: full gears, 25 mm bores, 12 torques x 40 positions
+#   study.sh full    [NP]  the study as written: full gears, 25 mm bores, 12 torques x 40
+#                          positions, reliefs as gap modifications (one factorisation per rank)
+#   study.sh exact   [NP]  the same with Contact/Micro-geometry = geometry (each relieved
+#                          profile meshed: 11 factorisations), the reference of the gap route
 #   study.sh preview [NP]  3-tooth sector models (rim-clamped), h_contact 0.2 mm, 16 positions:
-#                        the shape of the map in minutes, not its numbers
+#                          the shape of the map in minutes, not its numbers
+# Then check.py checks the full study against Harris (1958) / Tavakoli & Houser (1986), the
+# issue's unrelieved figure, the load-sharing argument for short reliefs and, when
+# out_exact/ exists, the gap route against the exact one; it ends with harris_map: PASS|FAIL.
+# Not in the quick or long tier: ~25-60 min at np = 2.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 src=$here/../..
@@ -18,8 +25,18 @@ if [ "$mode" = preview ]; then
     printf 'subsection Mesh\n  set Model = sector\n  set Sector teeth = 3\n  set h_contact = 0.2\nend\n'
     printf 'subsection Solve\n  set Number of positions = 16\n  set VTU = none\nend\n'; } > "$out/preview.prm"
   study=$out/preview.prm
+elif [ "$mode" = exact ]; then
+  mkdir -p "$out"
+  { sed -e "s|Design table = harris_map_designs.csv|Design table = $src/inputs/harris_map_designs.csv|" "$study"
+    printf 'subsection Contact\n  set Micro-geometry = geometry\nend\n'; } > "$out/exact.prm"
+  study=$out/exact.prm
 fi
 s=$(date +%s)
 mpirun -np "$np" "$gearfem" batch "$study" --output-dir "$out" | tee "$out/batch.log" | grep -v '^batch: job'
 echo "wall $(( $(date +%s) - s )) s at np = $np"
 MPLBACKEND=Agg /usr/bin/python3 "$src/scripts/plot_batch.py" "$out"
+if [ "$mode" = full ]; then
+  exact=()
+  [ -f "$here/out_exact/batch.csv" ] && exact=(--exact "$here/out_exact")
+  MPLBACKEND=Agg /usr/bin/python3 "$here/check.py" "$out" "${exact[@]}"
+fi
