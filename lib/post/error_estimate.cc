@@ -200,32 +200,43 @@ namespace gearfem::post
 
   std::string error_estimate_table(const ErrorEstimate &e)
   {
+    // Each number through its own stream: no formatting state leaks from one to the next.
+    auto fixed = [](double v, int digits, bool sign = false) {
+      std::ostringstream o;
+      o << std::fixed << std::setprecision(digits) << (sign ? std::showpos : std::noshowpos) << v;
+      return o.str();
+    };
+    auto general = [](double v) {
+      std::ostringstream o;
+      o << std::setprecision(6) << v;
+      return o.str();
+    };
     std::ostringstream o;
-    o << "Estimated discretisation error of the run's mesh (Richardson, refinement " << e.refinement
-      << ", assumed order " << e.order << "; Q_exact - Q_h, and |.| in % of Q_h):\n\n"
+    o << "Estimated discretisation error of the run's mesh (Richardson, refinement " << general(e.refinement)
+      << ", assumed order " << general(e.order) << "; Q_exact - Q_h, and |.| in % of Q_h):\n\n"
       << "| T1 [N m] | sample | roll [deg] | STE [um] | error STE [um] | root stress pinion [MPa] | error | "
          "root stress gear [MPa] | error | p_max [MPa] | error |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
     const auto &f = EstimatedQuantities::output_factors();
     for (const auto &s : e.samples)
       {
-        o << "| " << s.torque << " | " << (s.zone.empty() ? "" : s.zone + " " + s.point) << " | " << std::fixed
-          << std::setprecision(3) << s.phi1 * 180 / pi;
+        o << "| " << general(s.torque) << " | " << (s.zone.empty() ? "" : s.zone + " " + s.point) << " | "
+          << fixed(s.phi1 * 180 / pi, 3);
         for (int i = 0; i < EstimatedQuantities::size; ++i)
-          o << " | " << std::setprecision(i == 0 ? 4 : 2) << s.coarse[i] * f[i] << " | " << std::showpos
-            << std::setprecision(i == 0 ? 4 : 2) << s.error[i] * f[i] << std::noshowpos << " ("
-            << std::setprecision(2) << 100 * s.relative[i] << " %)";
+          o << " | " << fixed(s.coarse[i] * f[i], i == 0 ? 4 : 2) << " | "
+            << fixed(s.error[i] * f[i], i == 0 ? 4 : 2, true) << " (" << fixed(100 * s.relative[i], 2) << " %)";
         o << " |\n";
       }
-    o << std::defaultfloat << "\nLargest estimated error over the samples:";
+    o << "\nLargest estimated error over the samples:";
     for (std::size_t k = 0; k < e.max_relative.size(); ++k)
       {
         const auto &rel = e.max_relative[k].second;
-        o << " T1 " << e.max_relative[k].first << " N m: STE " << std::setprecision(2) << 100 * rel.ste
-          << " %, root stress " << 100 * rel.root_stress_pinion << " / " << 100 * rel.root_stress_gear
-          << " %, p_max " << 100 * rel.p_max << " %" << (k + 1 < e.max_relative.size() ? ";" : ".");
+        o << " T1 " << general(e.max_relative[k].first) << " N m: STE " << fixed(100 * rel.ste, 2)
+          << " %, root stress pinion/gear " << fixed(100 * rel.root_stress_pinion, 2) << " / "
+          << fixed(100 * rel.root_stress_gear, 2) << " %, p_max " << fixed(100 * rel.p_max, 2) << " %"
+          << (k + 1 < e.max_relative.size() ? ";" : ".");
       }
-    o << std::setprecision(3) << "\nCost: refined model (" << e.fine_dofs << " DoFs) " << e.seconds_setup
-      << " s, sample solves " << e.seconds_solve << " s.\n";
+    o << "\nCost: refined model (" << e.fine_dofs << " DoFs) " << fixed(e.seconds_setup, 1)
+      << " s, sample solves " << fixed(e.seconds_solve, 1) << " s.\n";
     return o.str();
   }
 
