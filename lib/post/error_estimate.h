@@ -4,7 +4,7 @@
 // the run's model (level h) and on a model whose fine mesh sizes are divided by r = 2
 // (level h/r); the error of the level-h values of STE, root stress (pinion, gear) and p_max
 // is estimated by Richardson extrapolation with an assumed order p,
-//   e_h = Q_exact - Q_h ~ (Q_{h/r} - Q_h) r^p / (r^p - 1)   (Richardson 1911; Roache 1998, eq. 5.4.1),
+//   e_h = Q_exact - Q_h ~ (Q_{h/r} - Q_h) r^p / (r^p - 1)   (Richardson 1911; Roache 1998, grid convergence index),
 // p = 2 by default (Q2 elements; the project's convergence data, docs/output-format.md
 // section "Error estimate", validation/error_estimate/README.md).
 // Callable by a test, the batch driver or an optimiser; `gearfem solve` reports it in its
