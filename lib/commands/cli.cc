@@ -81,7 +81,11 @@ namespace gearfem::commands
         << "\",\n  \"git_hash\": \"" << git_hash << "\",\n  \"command\": \"" << cmd.name
         << "\",\n  \"command_line\": \"" << json_escape(ctx.command_line)
         << "\",\n  \"input\": \"" << json_escape(ctx.input_file.string())
-        << "\",\n  \"finished_utc\": \"" << date << "\",\n  \"wall_time_s\": " << wall << "\n}\n";
+        << "\",\n  \"finished_utc\": \"" << date << "\",\n  \"wall_time_s\": " << wall;
+      if (ctx.outcome)
+        for (const auto &[name, value] : ctx.outcome->record_members)
+          j << ",\n  \"" << json_escape(name) << "\": " << value;
+      j << "\n}\n";
       write_file_atomically(ctx.output_dir / "run.json", j.str());
     }
 

@@ -6,6 +6,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -38,6 +39,8 @@ namespace gearfem::commands
     {
       int exit_status = 0;      ///< returned by the CLI when the command returns normally
       bool write_record = true; ///< false: no run.json/input.prm and no final line (MPI ranks > 0)
+      /// Extra members of run.json: (name, JSON value), written after the standard members.
+      std::vector<std::pair<std::string, std::string>> record_members;
     };
     Outcome *outcome = nullptr;
   };

@@ -7,6 +7,7 @@
 #include "commands/command.h"
 #include "contact/parameters.h"
 #include "io/journal.h"
+#include "post/error_estimate.h"
 #include "post/parameters.h"
 #include "post/solve_run.h"
 
@@ -67,6 +68,22 @@ namespace gearfem::commands
       out << "\n" << post::summary_table(r, pair, in.solve.torques) << "time: contact "
           << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
           << r.seconds.at("output") << " s\n";
+      if (in.solve.error_estimate)
+        {
+          post::ErrorEstimateOptions eo;
+          eo.post = post_options;
+          eo.out  = &out;
+          out << "\nerror estimate: " << post::error_sample_positions(pair).size() << " sample positions x "
+              << in.solve.torques.size() << " torques on two mesh levels (Solve/Error estimate)" << std::endl;
+          const post::ErrorEstimate e = post::estimate_error(*model, in, eo);
+          const double sweep = r.seconds.at("contact") + r.seconds.at("post") + r.seconds.at("output");
+          out << "\n" << post::error_estimate_table(e) << "cost of the estimate " << e.seconds()
+              << " s against the run's set-up " << model->setup_seconds() << " s + sweep " << sweep << " s\n";
+          if (ctx.outcome)
+            ctx.outcome->record_members.emplace_back(
+              "error_estimate", post::error_estimate_json(e, {{"run_setup_seconds", model->setup_seconds()},
+                                                              {"run_sweep_seconds", sweep}}));
+        }
       int n_unresolved = 0;
       for (const auto &[T, n] : r.unresolved)
         n_unresolved += n;
@@ -94,6 +111,9 @@ namespace gearfem::commands
                     "stiffness.png, load_sharing.png, pressure.png, root_stress.png.\n"
                     "A killed run continues with --resume (the input must be unchanged: its hash\n"
                     "is checked against the journal solve.journal in the output folder).\n"
+                    "With `Solve/Error estimate = true` it also estimates the discretisation error\n"
+                    "of STE, root stress and p_max at three sample positions on a finer mesh\n"
+                    "(summary and run.json, member error_estimate).\n"
                     "Sample runs:\n"
                     "  gearfem solve inputs/demo.prm\n"
                     "  gearfem solve inputs/demo.prm --resume\n"

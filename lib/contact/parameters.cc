@@ -125,6 +125,13 @@ namespace gearfem::contact
     prm.declare_entry("VTU displacement scale", "1", Double(),
                       "Magnification of the displacement in the VTU files. Units: none. Allowed: > 0.");
     prm.declare_entry("Plots", "true", Bool(), "Write the PNG plots (needs /usr/bin/python3 with matplotlib).");
+    prm.declare_entry("Error estimate", "false", Bool(),
+                      "After the sweep, re-solve three sample positions at each torque (mid single-pair "
+                      "zone (B+D)/2, mid double-pair zone (A+B)/2, transition D) on a model whose fine mesh "
+                      "sizes (h_contact, h_fillet, h_coast, h_corner) are halved, and report the estimated "
+                      "discretisation error of STE, root stress and p_max (Richardson, order 2) in the "
+                      "summary and run.json (docs/output-format.md). Costs one more set-up on the finer "
+                      "mesh and 6 solves per torque. Units: none.");
     prm.leave_subsection();
   }
 
@@ -157,6 +164,7 @@ namespace gearfem::contact
                   vtu == "all" ? SolveParameters::Vtu::all : SolveParameters::Vtu::named;
     p.vtu_scale = params::get_double(prm, "VTU displacement scale");
     p.plots     = params::get_bool(prm, "Plots");
+    p.error_estimate = params::get_bool(prm, "Error estimate");
     prm.leave_subsection();
 
     if (p.positions == SolveParameters::Positions::cycle && p.n_positions < 1)

@@ -46,6 +46,10 @@ namespace gearfem::contact
     Vtu vtu = Vtu::named;
     double vtu_scale = 1.0; ///< displacement magnification in the VTU files
     bool plots       = true;
+    /// `Error estimate`: after the sweep, estimate the discretisation error of STE, root
+    /// stress and p_max at sample positions on a model with the fine mesh sizes halved
+    /// (post/error_estimate.h).
+    bool error_estimate = false;
   };
 
   /// Everything `gearfem solve` reads, parsed and checked.
