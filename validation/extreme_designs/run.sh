@@ -76,6 +76,9 @@ run_case eps_just_above_1 profile 0   ADDENDUM=0.55
 run_case eps_below_1      profile 2   ADDENDUM=0.5
 if [ "$quick" != "--quick" ]; then
   run_case torque_1e-3      solve 0   TORQUE=1e-3
+  # The same on a 8x finer contact mesh: q ~ 6e-9 rad, whose iterates differ by round-off
+  # (exit 3, "did not settle", before the 100-ulp floor on the rotation test).
+  run_case torque_1e-3_fine solve 0   TORQUE=1e-3 H=0.0625
   run_case torque_huge      solve 2   TORQUE=1e6
   run_case torque_limit_ok  solve 0   TORQUE=2000
   run_case nu_0.499_strain  solve 0   NU=0.499 "PLANE=plane strain"
