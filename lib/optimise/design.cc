@@ -91,7 +91,10 @@ namespace gearfem::optimise
     static const char *names[] = {"flank strictly decreasing in position 2",
                                   "flanks of a tooth do not overlap (x >= 0 in position 1)",
                                   "contact ratio >= minimum",
-                                  "relative curvature 1/R > 0 (no interference)"};
+                                  "relative curvature 1/R > 0 (no interference)",
+                                  "tip-to-fillet interference: the path of contact meets the tip circle of gear 2 on the designed flank",
+                                  "recovered rack above the cutter tip line (dedendum)",
+                                  "recovered rack u strictly monotone"};
     return names[c];
   }
 

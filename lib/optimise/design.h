@@ -69,6 +69,9 @@ namespace gearfem::optimise
     flanks_do_not_overlap,        ///< max(-x)/m over the flank (position 1)
     contact_ratio_minimum,        ///< eps_min - eps
     positive_relative_curvature,  ///< -min(1/R) m: 1/R <= 0 means the flanks cross (interference)
+    reaches_gear2_tip,            ///< case 2: (r_a2 - r2 of the lowest flank point)/m: the path meets gear 2's tip
+    rack_above_cutter_tip,        ///< case 2: (-h_fP* m - lowest recovered rack v)/m
+    rack_monotone,                ///< case 2: recovered rack u strictly monotone (max step against the trend / mean step)
     n_constraints
   };
   const char *constraint_name(int c);

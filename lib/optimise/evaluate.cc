@@ -4,6 +4,7 @@
 #include "optimise/design.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -65,17 +66,40 @@ namespace gearfem::optimise
         }
       else
         {
+          // Where the path meets gear 2's tip circle; when it does not on the designed flank,
+          // the whole flank is sampled and the constraint reaches_gear2_tip is violated.
           ta = crossing(k, r2, p.tip_radius(2), "start of active profile");
           if (std::isnan(ta))
-            throw SolverError("tip-to-fillet interference: the path of contact does not reach the tip "
-                              "circle of gear 2 (r_a2 = " + mm(p.tip_radius(2)) +
-                              ") within the designed pinion flank");
+            ta = c.t_begin();
         }
       double tb = crossing(k, r1, p.tip_radius(1), "pinion tip");
       if (std::isnan(tb))
         throw SolverError("the designed pinion flank does not reach the tip circle r_a1 = " +
                           mm(p.tip_radius(1)));
       return {ta, tb, Sampling::pinion_radius};
+    }
+
+    /// Case 2's constraints on the recovered rack and the reach of the path, from a grid of
+    /// the whole flank: (reaches_gear2_tip, rack_above_cutter_tip, rack_monotone).
+    std::array<double, 3> rack_constraints(const FlankKinematics &k, const PairData &p)
+    {
+      const auto         &c = k.flank();
+      const int           M = 100;
+      std::vector<double> u(M + 1);
+      double              vmin = std::numeric_limits<double>::infinity(), r2_low = 0;
+      for (int i = 0; i <= M; ++i)
+        {
+          const ContactSample q = k.at(c.t_begin() + (c.t_end() - c.t_begin()) * i / M);
+          u[i] = q.rack_u, vmin = std::min(vmin, q.rack_v);
+          if (i == 0)
+            r2_low = q.r2;
+        }
+      const double trend = (u[M] - u[0]) / M;
+      double       worst = -std::numeric_limits<double>::infinity();
+      for (int i = 0; i < M; ++i)
+        worst = std::max(worst, -(u[i + 1] - u[i]) / trend);
+      const double m = p.module;
+      return {(p.tip_radius(2) - r2_low) / m, (-p.dedendum * m - vmin) / m, std::abs(trend) > 0 ? worst : 1.0};
     }
   } // namespace
 
@@ -136,15 +160,26 @@ namespace gearfem::optimise
           dr_prev = r - r_prev;
         r_prev = r;
       }
-    ev.constraints[decreasing_in_position_2]    = c_dec;
+    // C1 is the thesis' condition on a flank modelled as y(x) in position 2 (case 2); a case-1
+    // tooth has a horizontal tangent at its crest, where any turned flank rises.
+    ev.constraints[decreasing_in_position_2]    = kind_ == DesignKind::case2_flank ? c_dec : -1.0;
     ev.constraints[flanks_do_not_overlap]       = c_ovl;
     ev.constraints[contact_ratio_minimum]       = s.min_contact_ratio - ev.contact_ratio;
     ev.constraints[positive_relative_curvature] = -ev.stats.min * m;
+    if (kind_ == DesignKind::case2_flank)
+      {
+        const auto rc                          = rack_constraints(k, pair_);
+        ev.constraints[reaches_gear2_tip]      = rc[0];
+        ev.constraints[rack_above_cutter_tip]  = rc[1];
+        ev.constraints[rack_monotone]          = rc[2];
+      }
+    else
+      for (int c : {reaches_gear2_tip, rack_above_cutter_tip, rack_monotone})
+        ev.constraints[c] = -1; // case 2's recovered rack only
     ev.computable                               = true;
 
     for (int c = 0; c < n_constraints; ++c)
-      if (!(ev.constraints[c] <= 1e-9) &&
-          (c != decreasing_in_position_2 || kind_ == DesignKind::case2_flank))
+      if (!(ev.constraints[c] <= 1e-9))
         {
           ev.reason = std::string(constraint_name(c)) + " violated (" + to_string_g(ev.constraints[c]) + " > 0)";
           return ev;
