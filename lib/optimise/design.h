@@ -85,6 +85,7 @@ namespace gearfem::optimise
     double objective = 0;    ///< [1/mm]
     Statistics stats;        ///< of 1/R [1/m]
     double integral = 0;     ///< int (1/R)^2 dx [1/mm] (case 2's first term, before the 2.5)
+    double x_extent = 0;     ///< |x(end) - x(start)| of the sampled flank in position 2 [mm]
     double contact_ratio = 0;
     double start_radius = 0; ///< first sample's pinion radius [m]
     std::vector<double> constraints = std::vector<double>(n_constraints, 1.0);

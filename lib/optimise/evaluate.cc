@@ -142,6 +142,8 @@ namespace gearfem::optimise
         const double ka = kap[i] * 1e-3, kb = kap[i + 1] * 1e-3;
         ev.integral += 0.5 * (ka * ka + kb * kb) * std::abs(xb - xa);
       }
+    ev.x_extent  = std::abs(rotate(fl->point(ev.samples.back().t), turn).x() -
+                            rotate(fl->point(ev.samples.front().t), turn).x()) * 1e3;
     ev.objective = objective(kind_, ev.stats, ev.integral, ev.contact_ratio);
 
     // Constraints on the whole designed flank (201 points): C1 in position 2, C2 in position 1;
