@@ -103,7 +103,9 @@ namespace gearfem::optimise
     , pair_(pair)
   {
     const Involute inv = involute_of(pair);
-    tip_point_         = inv.at_radius(pair.tip_radius(1)) / pair.module;
+    // 0.001 m beyond the tip circle, so that the flank written to optimum.prm (12 digits)
+    // still reaches the tip circle when gearfem generates it; sampling stops at r_a1.
+    tip_point_ = inv.at_radius(pair.tip_radius(1) + 1e-3 * pair.module) / pair.module;
   }
 
   int Design::n_free() const

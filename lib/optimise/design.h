@@ -11,7 +11,7 @@
 //    join smoothly), P2 = (u2, v2). Free: x = (u1, u2, v2, u3). Start: the fit of the
 //    sinusoid v = cos 2u with equally spaced u (u(t) then linear): x0 = (pi/8, pi/4, 0, 3pi/8).
 //  - Case 2 (pinion flank, degree 4, 5 control points, 8 free coordinates): P0..P3 free,
-//    P4 fixed at the involute's tip point (tip circle and tip thickness kept). Start: the
+//    P4 fixed on the involute 0.001 m beyond the tip circle (tip thickness kept). Start: the
 //    least-squares fit of the involute flank between the base circle + half the base-to-SAP
 //    distance and the tip, at parameters uniform in roll angle.
 //  - Bounds: a box of +-`bound` (module units) about the start point.
