@@ -145,6 +145,8 @@ namespace gearfem::optimise
     ev.x_extent  = std::abs(rotate(fl->point(ev.samples.back().t), turn).x() -
                             rotate(fl->point(ev.samples.front().t), turn).x()) * 1e3;
     ev.objective = objective(kind_, ev.stats, ev.integral, ev.contact_ratio);
+    if (!std::isfinite(ev.objective))
+      throw SolverError("objective not finite (contact ratio " + to_string_g(ev.contact_ratio) + ")");
 
     // Constraints on the whole designed flank (201 points): C1 in position 2, C2 in position 1;
     // and the generated flank must not fold back (undercut cusp: radius not monotone).

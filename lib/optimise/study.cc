@@ -201,8 +201,10 @@ namespace gearfem::optimise
       for (int i : {1, 2})
         o << "subsection Gear " << i << "\n  set Number of teeth = " << (i == 1 ? s.pair.z1 : s.pair.z2)
           << "\n  set Face width      = " << g(s.face_width * 1e3, 10) << "\nend\n";
-      if (c2)
-        o << "subsection Solve\n  set Torques = 5\nend\n";
+      if (c2) // the FE check of seed 003 (ch. 7), as inputs/seed003_opt_fe_involute.prm
+        o << "subsection Mesh\n  set Model        = sector\n  set Sector teeth = 3\n  set h_fillet     = 0.15\n"
+             "  set h_body       = 2\nend\nsubsection Solve\n  set Torques             = 5\n"
+             "  set Number of positions = 20\n  set VTU                 = none\nend\n";
       f.commit();
     }
   }

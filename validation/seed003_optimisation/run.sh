@@ -2,7 +2,8 @@
 # Seed 003 profile optimisation (Koronaios, NTUA 2021; see README.md): runs
 # `gearfem optimise` on case 1 (pinion rack) and case 2 (pinion flank) with four methods each
 # (steepest descent + golden section, SLSQP, COBYLA, ISRES; about 1 min in all on 2 cores),
-# then `gearfem profile` on the case-2 optimum.prm (the same geometry chain as an involute),
+# then `gearfem profile` on the case-2 optimum.prm (the same geometry chain as an involute)
+# and `gearfem solve` on it and on the involute at T1 = 5 N m (about 5 min),
 # and check.py compares the involute and sinusoid rows with the thesis' tables (0.2 % /
 # 1.5 %), case 1's optimum with its row, case 2's with its objective, and the contact ratio
 # of the optimiser with gearfem's own path of contact. Ends with PASS or FAIL.
@@ -17,6 +18,15 @@ done
 echo "== gearfem profile results/case2/optimum.prm (the optimum through the geometry chain)"
 rm -rf "$out/case2_profile"
 nice -n 15 "$gearfem" profile "$out/case2/optimum.prm" --output-dir "$out/case2_profile" > "$out/case2_profile.log"
+# FE check (issue section 3; ~25 s for the involute, ~4 min for the B-spline pair, whose
+# gear-2 angle comes from the gap-closing search at every position).
+for d in involute optimum; do
+  case=$root/inputs/seed003_opt_fe_involute.prm
+  [ $d = optimum ] && case=$out/case2/optimum.prm
+  echo "== gearfem solve $case (T1 = 5 N m, b = 20 mm)"
+  rm -rf "$out/fe_$d"
+  nice -n 15 "$gearfem" solve "$case" --output-dir "$out/fe_$d" | grep -v "ETA" | tail -2
+done
 cp "$out/case1/summary.md" "$here/case1_summary.md"
 cp "$out/case2/summary.md" "$here/case2_summary.md"
 for f in curvature profiles convergence; do
