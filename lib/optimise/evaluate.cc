@@ -85,21 +85,31 @@ namespace gearfem::optimise
     {
       const auto         &c = k.flank();
       const int           M = 100;
-      std::vector<double> u(M + 1);
-      double              vmin = std::numeric_limits<double>::infinity(), r2_low = 0;
+      // A uniform grid plus points 1e-6 inside both ends: the slope at the ends is where
+      // gearfem's own check (u' > 0 at every spline parameter) first fails.
+      std::vector<double> t, u;
       for (int i = 0; i <= M; ++i)
         {
-          const ContactSample q = k.at(c.t_begin() + (c.t_end() - c.t_begin()) * i / M);
-          u[i] = q.rack_u, vmin = std::min(vmin, q.rack_v);
+          t.push_back(c.t_begin() + (c.t_end() - c.t_begin()) * i / M);
+          if (i == 0 || i == M - 1)
+            t.push_back(c.t_begin() + (c.t_end() - c.t_begin()) * (i == 0 ? 1e-6 : 1 - 1e-6));
+        }
+      double vmin = std::numeric_limits<double>::infinity(), r2_low = 0;
+      for (std::size_t i = 0; i < t.size(); ++i)
+        {
+          const ContactSample q = k.at(t[i]);
+          u.push_back(q.rack_u), vmin = std::min(vmin, q.rack_v);
           if (i == 0)
             r2_low = q.r2;
         }
-      const double trend = (u[M] - u[0]) / M;
+      const double trend = (u.back() - u.front()) / (t.back() - t.front());
       double       worst = -std::numeric_limits<double>::infinity();
-      for (int i = 0; i < M; ++i)
-        worst = std::max(worst, -(u[i + 1] - u[i]) / trend);
+      for (std::size_t i = 0; i + 1 < t.size(); ++i)
+        worst = std::max(worst, -(u[i + 1] - u[i]) / (t[i + 1] - t[i]) / trend);
       const double m = p.module;
-      return {(p.tip_radius(2) - r2_low) / m, (-p.dedendum * m - vmin) / m, std::abs(trend) > 0 ? worst : 1.0};
+      // Margin: every slope at least 2 % of the mean slope, so that the exact end derivative
+      // that gearfem checks cannot have crossed zero between the grid points.
+      return {(p.tip_radius(2) - r2_low) / m, (-p.dedendum * m - vmin) / m, std::abs(trend) > 0 ? worst + 0.02 : 1.0};
     }
   } // namespace
 
