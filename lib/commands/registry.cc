@@ -12,6 +12,7 @@ namespace gearfem::commands
   Command calibrate_command();
   Command batch_command();
   Command gearbox_command();
+  Command optimise_command();
 
   const std::vector<Command> &registry()
   {
@@ -24,6 +25,7 @@ namespace gearfem::commands
       solve_command(),
       calibrate_command(),
       batch_command(),
+      optimise_command(),
       bench_command(),
     };
     return commands;

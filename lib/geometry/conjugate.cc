@@ -96,7 +96,7 @@ namespace gearfem::geometry
     {
       double th, th1, th2;
     };
-    InverseAngle inverse_angle(const Curve &g, double r0, double t)
+    InverseAngle inverse_angle(const Curve &g, double r0, double t, double outward_sign)
     {
       const Vec2   G = g.point(t), G1 = g.d1(t), G2 = g.d2(t), G3 = g.d3(t);
       const double L2 = G1.squaredNorm(), L = std::sqrt(L2);
@@ -119,11 +119,15 @@ namespace gearfem::geometry
       const double c     = cross(G1, G2);
       const double beta1 = c / L2;
       const double beta2 = cross(G1, G3) / L2 - 2.0 * c * G1.dot(G2) / (L2 * L2);
-      // Two solutions: theta = beta - asin(w) and theta = beta - pi + asin(w). Take the one
-      // nearer to zero (the contact position closest to the pitch point).
+      // Two solutions: theta = beta - asin(w) and theta = beta - pi + asin(w). The contact is
+      // the one that turns the outward normal towards the rack (n.y > 0); the other touches
+      // the back of the flank. Nearest to zero only decides a degenerate case (near the base
+      // circle, at large turns, the back-side root can be nearer to zero: issue 15).
       const double t_a = std::remainder(beta - a, 2.0 * M_PI);
       const double t_b = std::remainder(beta - M_PI + a, 2.0 * M_PI);
-      if (std::abs(t_a) <= std::abs(t_b))
+      const Vec2   n   = outward_sign * Vec2(G1.y(), -G1.x()) / L;
+      const bool   ua  = (rot(-t_a) * n).y() > 0, ub = (rot(-t_b) * n).y() > 0;
+      if (ua != ub ? ua : std::abs(t_a) <= std::abs(t_b))
         return {t_a, beta1 - a1, beta2 - a2};
       return {t_b, beta1 + a1, beta2 + a2};
     }
@@ -132,26 +136,30 @@ namespace gearfem::geometry
   InverseConjugateCurve::InverseConjugateCurve(CurvePtr gear_curve, double r0)
     : gear_(std::move(gear_curve))
     , r0_(r0)
-  {}
+  {
+    // Outward normal of an x > 0 flank: of the two normals at mid-flank, the one towards +x.
+    const double tm = 0.5 * (gear_->t_begin() + gear_->t_end());
+    outward_      = gear_->d1(tm).y() > 0 ? 1.0 : -1.0;
+  }
   double InverseConjugateCurve::t_begin() const { return gear_->t_begin(); }
   double InverseConjugateCurve::t_end() const { return gear_->t_end(); }
 
   Vec2 InverseConjugateCurve::point(double t) const
   {
-    const auto A = inverse_angle(*gear_, r0_, t);
+    const auto A = inverse_angle(*gear_, r0_, t, outward_);
     return rot(-A.th) * gear_->point(t) - Vec2(r0_ * A.th, r0_);
   }
 
   Vec2 InverseConjugateCurve::d1(double t) const
   {
-    const auto A = inverse_angle(*gear_, r0_, t);
+    const auto A = inverse_angle(*gear_, r0_, t, outward_);
     const Vec2 G = gear_->point(t), G1 = gear_->d1(t);
     return rot(-A.th) * (G1 - A.th1 * perp(G)) - Vec2(r0_ * A.th1, 0.0);
   }
 
   Vec2 InverseConjugateCurve::d2(double t) const
   {
-    const auto A = inverse_angle(*gear_, r0_, t);
+    const auto A = inverse_angle(*gear_, r0_, t, outward_);
     const Vec2 G = gear_->point(t), G1 = gear_->d1(t), G2 = gear_->d2(t);
     return rot(-A.th) * (G2 - 2.0 * A.th1 * perp(G1) - A.th2 * perp(G) - A.th1 * A.th1 * G) -
            Vec2(r0_ * A.th2, 0.0);

@@ -47,5 +47,6 @@ namespace gearfem::geometry
   private:
     CurvePtr gear_;
     double r0_;
+    double outward_ = 1; ///< +1: the right normal of the traversal is outward (x > 0 flank)
   };
 } // namespace gearfem::geometry

@@ -1,0 +1,128 @@
+// ParameterHandler bindings of `gearfem optimise` (see parameters.h).
+#include "optimise/parameters.h"
+
+#include "base/errors.h"
+#include "params/checked.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <sstream>
+
+namespace gearfem::optimise
+{
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::Selection;
+
+  void declare_study_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Optimise");
+    prm.declare_entry("Case", "case 2", Selection("case 1|case 2"),
+                      "Seed 003 case: 1 = pinion rack B-spline (4 free coordinates), objective max + mean "
+                      "+ std of |1/R|; 2 = pinion flank B-spline (8 free coordinates), objective "
+                      "2.5 int (1/R)^2 dx + std(1/R) + 0.1/eps. Units: none.");
+    prm.declare_entry("Pinion teeth", "19", Integer(), "z1. Units: none. Allowed: 5 to 10000.");
+    prm.declare_entry("Gear teeth", "55", Integer(), "z2. Units: none. Allowed: 5 to 10000.");
+    prm.declare_entry("Module", "2.5", Double(), "m. Units: mm. Allowed: > 0.");
+    prm.declare_entry("Pressure angle", "20", Double(),
+                      "Of the involute reference and of the case-2 start fit. Units: deg. Allowed: 10 to 35.");
+    prm.declare_entry("Addendum coefficient", "1", Double(),
+                      "Tip circles r + h_a* m of both gears. Units: multiples of the module. Allowed: 0.5 to 1.5.");
+    prm.declare_entry("Dedendum coefficient", "1.25", Double(),
+                      "Cutter addendum of the case-2 geometry (the recovered rack must stay above it). "
+                      "Units: multiples of the module.");
+    prm.declare_entry("Root radius coefficient", "0.25", Double(),
+                      "Cutter tip radius of the case-2 geometry. Units: multiples of the module.");
+    prm.declare_entry("Face width", "20", Double(), "Written to optimum.prm. Units: mm. Allowed: > 0.");
+    prm.declare_entry("Samples", "201", Integer(),
+                      "Points along the active flank in each evaluation. Units: none. Allowed: 11 to 1e6.");
+    prm.declare_entry("Report samples", "2001", Integer(),
+                      "Points of the reported statistics and curves. Units: none. Allowed: 11 to 1e6.");
+    prm.declare_entry("Minimum contact ratio", "1", Double(),
+                      "Constraint eps >= this (eps = rack-displacement range / pitch). Units: none. "
+                      "Allowed: 0 to 5.");
+    prm.declare_entry("Start radius", "0", Double(),
+                      "Start of the sampled pinion range (involute and case 2); 0 = the start of active "
+                      "profile. Units: mm.");
+    prm.declare_entry("Design checks", "true", Bool(),
+                      "Case 2: run gearfem's design checks (GearPair: interference, undercut into the "
+                      "active profile, pointed tip) on every evaluation. Units: none.");
+    prm.declare_entry("Start point", "", Anything(),
+                      "Free coordinates, comma-separated (case 1: u1, u2, v2, u3; case 2: x0, y0, ..., "
+                      "x3, y3); empty = the default start (docs/optimise.md). Units: multiples of the module.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Optimiser");
+    prm.declare_entry("Methods", "steepest descent, slsqp, cobyla, isres", Anything(),
+                      "Comma-separated, each run from the same start: " + method_names() + ". Units: none.");
+    prm.declare_entry("Max evaluations", "3000", Integer(),
+                      "Design evaluations per method, finite differences included. Units: none. Allowed: >= 1.");
+    prm.declare_entry("Bound", "0.5", Double(),
+                      "Box half-width about the start point. Units: multiples of the module. Allowed: (0, 2].");
+    prm.declare_entry("Finite-difference step", "1e-6", Double(),
+                      "Forward differences of the gradient-based methods. Units: multiples of the module.");
+    prm.declare_entry("Relative x tolerance", "1e-8", Double(), "NLopt xtol_rel. Units: none. Allowed: 0 to 1.");
+    prm.declare_entry("Relative f tolerance", "1e-10", Double(),
+                      "NLopt ftol_rel; steepest descent stops below it. Units: none. Allowed: 0 to 1.");
+    prm.declare_entry("Iterations", "100", Integer(), "Steepest descent iterations (thesis: 100). Units: none.");
+    prm.declare_entry("Golden-section tolerance", "1e-8", Double(),
+                      "Line-search interval (thesis: 1e-8). Units: multiples of the module. Allowed: > 0.");
+    prm.declare_entry("Line-search steps", "100", Integer(),
+                      "Bracketing and golden-section steps per line search (thesis: 100). Units: none.");
+    prm.declare_entry("Seed", "3", Integer(), "Random seed of the global methods. Units: none.");
+    prm.declare_entry("Population", "0", Integer(), "Global methods; 0 = NLopt's default. Units: none.");
+    prm.leave_subsection();
+  }
+
+  Study parse_study_parameters(dealii::ParameterHandler &prm)
+  {
+    Study s;
+    prm.enter_subsection("Optimise");
+    s.kind                   = prm.get("Case") == "case 1" ? DesignKind::case1_rack : DesignKind::case2_flank;
+    s.pair.z1                = params::get_integer(prm, "Pinion teeth");
+    s.pair.z2                = params::get_integer(prm, "Gear teeth");
+    s.pair.module            = params::get_double(prm, "Module") * 1e-3;
+    s.pair.pressure_angle    = params::get_double(prm, "Pressure angle") * M_PI / 180;
+    s.pair.addendum          = params::get_double(prm, "Addendum coefficient");
+    s.pair.dedendum          = params::get_double(prm, "Dedendum coefficient");
+    s.pair.root_radius       = params::get_double(prm, "Root radius coefficient");
+    s.face_width             = params::get_double(prm, "Face width") * 1e-3;
+    require_greater("Optimise/Face width", s.face_width * 1e3, 0.0, "mm");
+    s.eval.samples           = params::get_integer(prm, "Samples");
+    s.report_samples         = params::get_integer(prm, "Report samples");
+    s.eval.min_contact_ratio = params::get_double(prm, "Minimum contact ratio");
+    s.eval.start_radius      = params::get_double(prm, "Start radius") * 1e-3;
+    s.eval.design_checks     = params::get_bool(prm, "Design checks");
+    s.start                  = params::get_doubles(prm, "Start point");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Optimiser");
+    OptimiserSettings o;
+    o.max_evaluations   = params::get_integer(prm, "Max evaluations");
+    o.bound             = params::get_double(prm, "Bound");
+    o.fd_step           = params::get_double(prm, "Finite-difference step");
+    o.xtol_rel          = params::get_double(prm, "Relative x tolerance");
+    o.ftol_rel          = params::get_double(prm, "Relative f tolerance");
+    o.iterations        = params::get_integer(prm, "Iterations");
+    o.golden_tolerance  = params::get_double(prm, "Golden-section tolerance");
+    o.line_search_steps = params::get_integer(prm, "Line-search steps");
+    const int seed      = params::get_integer(prm, "Seed");
+    require_range("Optimiser/Seed", seed, 0, 2147483647);
+    o.seed       = static_cast<unsigned int>(seed);
+    o.population = params::get_integer(prm, "Population");
+    std::stringstream methods(prm.get("Methods"));
+    for (std::string item; std::getline(methods, item, ',');)
+      {
+        const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+        if (b == std::string::npos)
+          continue;
+        o.method = method_from_string(item.substr(b, e - b + 1), "Optimiser/Methods");
+        s.runs.push_back(o);
+      }
+    prm.leave_subsection();
+    check_study(s);
+    return s;
+  }
+} // namespace gearfem::optimise

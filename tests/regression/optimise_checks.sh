@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# CLI checks of `gearfem optimise` (issue 15; registered in CMakeLists.txt beside this file).
+#   optimise_checks.sh bad   GEARFEM FILE.prm  exit 2, the parameter of its "# expect:" line named,
+#                                              no output left, --validate also exits 2
+#   optimise_checks.sh short GEARFEM SRC_DIR   a 200-evaluation case-1 COBYLA run: exit 0, every
+#                                              file written, objective lowered, optimum feasible,
+#                                              no NaN, and the sinusoid row equals Table 5.2 (0.2 %)
+set -uo pipefail
+mode=$1 gearfem=$2 arg=$3
+fail() { echo "FAIL: $*" >&2; exit 1; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/gearfem_opt.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+near_rel() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = (a - b) / b; if (d < 0) d = -d; exit !(d <= t) }'; }
+
+case $mode in
+  bad)
+    expect=$(sed -n 's/^# expect: //p' "$arg")
+    "$gearfem" optimise "$arg" --output-dir "$work/out" > "$work/stdout" 2> "$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit status $rc (expected 2) for $arg"
+    grep -qF "$expect" "$work/stderr" || fail "message does not name '$expect'"
+    grep -qi "internal error\|terminate\|Traceback" "$work/stderr" && fail "crash text in stderr"
+    [ ! -e "$work/out" ] || [ -z "$(ls -A "$work/out")" ] || fail "output left behind: $(ls "$work/out")"
+    "$gearfem" optimise --validate "$arg" > /dev/null 2>&1
+    [ $? -eq 2 ] || fail "--validate did not exit 2 for $arg"
+    ;;
+  short)
+    "$gearfem" optimise "$arg/tests/regression/data/optimise/short_case1.prm" --output-dir "$work/out" > "$work/log" 2>&1 \
+      || { cat "$work/log"; fail "run failed"; }
+    for f in optimise.csv summary.md curvature.csv profiles.csv optimum.prm; do
+      [ -s "$work/out/$f" ] || fail "$f missing"
+    done
+    grep -qi "nan" "$work/out/optimise.csv" "$work/out/curvature.csv" "$work/out/summary.md" && fail "NaN written"
+    grep -q "evaluations .*ETA" "$work/log" || fail "no progress line with i/N and ETA"
+    # The cobyla row: objective below the start's; the start row is the sinusoid fit.
+    start=$(awk -F'|' '$2 ~ /^ start/ { gsub(/ /, "", $5); print $5 }' "$work/out/summary.md")
+    best=$(awk -F'|' '$2 ~ /^ cobyla/ { gsub(/ /, "", $5); print $5 }' "$work/out/summary.md")
+    awk -v s="$start" -v b="$best" 'BEGIN { exit !(b < 0.5 * s) }' || fail "objective not lowered: $start -> $best"
+    last=$(awk -F, '$1 == "cobyla" { v = $5 } END { print v }' "$work/out/optimise.csv")
+    near_rel "$last" "$best" 1e-3 || fail "history ends at $last, summary says $best"
+    # Sinusoid row against the thesis' Table 5.2: 0.1333, 0.6719, 0.1542 1/mm within 0.2 %.
+    read -r mean max std < <(awk -F'|' '$2 ~ /^ sinusoid/ { print $6, $7, $8 }' "$work/out/summary.md")
+    near_rel "$mean" 0.1333 2e-3 && near_rel "$max" 0.6719 2e-3 && near_rel "$std" 0.1542 2e-3 \
+      || fail "sinusoid row $mean $max $std differs from Table 5.2"
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac
+echo "PASS: optimise $mode"

@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Checks of validation/seed003_optimisation (README.md): the summary tables of both cases
+and the case-2 optimum's pair.csv from `gearfem profile`, against the thesis (Koronaios 2021,
+Tables 5.2 and 6.1, via /work/shared/reference/SEED003_OPTIMISATION.md) and closed forms."""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "lib"))
+from vcheck import Checks, read_md_tables  # noqa: E402
+
+p = argparse.ArgumentParser()
+p.add_argument("--out", required=True)
+a = p.parse_args()
+c = Checks("seed003_optimisation", a.out)
+
+
+def rows(case):
+    head, body = read_md_tables(os.path.join(a.out, f"case{case}", "summary.md"))[0]
+    out = {}
+    for r in body:
+        d = dict(zip(head, r))
+        def num(k):
+            v = d[k].lstrip("~")
+            return float(v) if v else None
+        out[d["design"]] = {"f": num("objective [1/mm]"), "mean": num("mean abs(1/R) [1/mm]"),
+                            "max": num("max abs(1/R) [1/mm]"), "std": num("std(1/R) [1/mm]"),
+                            "eps": num("contact ratio") if d["contact ratio"] != "not stated" else None}
+    return out
+
+
+r1, r2 = rows(1), rows(2)
+T52, T61 = "thesis Table 5.2", "thesis Table 6.1 (2nd)"
+s = r1["sinusoid"]
+c.rel("sinusoid mean |1/R|", s["mean"], 0.1333, 0.002, T52, " 1/mm")
+c.rel("sinusoid max |1/R|", s["max"], 0.6719, 0.002, T52, " 1/mm")
+c.rel("sinusoid std 1/R", s["std"], 0.1542, 0.002, T52, " 1/mm")
+c.rel("sinusoid contact ratio", s["eps"], 0.9066, 0.001, "closed form K(u) = -u + m sin(4u/m)")
+i = r2["involute (SAP to tip)"]
+# From the exact SAP the row is 0.1780/0.6628/0.0755 (digest sec. 2): the thesis range starts
+# 1.7 um lower; the 0.2 % check with that start is the unit test Statistics.InvoluteRowOfTable61.
+c.rel("involute mean |1/R| (exact SAP)", i["mean"], 0.1783, 0.015, T61, " 1/mm")
+c.rel("involute max |1/R| (exact SAP)", i["max"], 0.6708, 0.015, T61, " 1/mm")
+c.rel("involute std 1/R (exact SAP)", i["std"], 0.0762, 0.015, T61, " 1/mm")
+c.rel("involute contact ratio", i["eps"], 1.657, 0.001, "ISO 21771 line of action (digest sec. 0)")
+
+methods = ["steepest descent", "slsqp", "cobyla", "isres"]
+for case, r in ((1, r1), (2, r2)):
+    for m in methods:
+        c.at_most(f"case {case} {m}: objective below the start", r[m]["f"], r["start"]["f"], "must descend")
+best1 = min((r1[m]["f"], m) for m in methods)[1]
+b = r1[best1]
+c.at_most(f"case 1 best ({best1}) objective", b["f"], 0.0708 + 0.1644 + 0.0490, T52 + " (sum of its row)", " 1/mm")
+c.rel(f"case 1 best ({best1}) mean |1/R|", b["mean"], 0.0708, 0.05, T52, " 1/mm")
+c.rel(f"case 1 best ({best1}) max |1/R|", b["max"], 0.1644, 0.05, T52, " 1/mm")
+c.info(f"case 1 best ({best1}) std 1/R", b["std"], 0.0490, "about -6 %: the objective is what is minimised")
+c.rel("case 1 steepest descent objective (the thesis method)", r1["steepest descent"]["f"], 0.2842, 0.05, T52)
+
+best2 = min((r2[m]["f"], m) for m in methods)[1]
+b = r2[best2]
+c.at_most(f"case 2 best ({best2}) objective vs involute x 0.6", b["f"], 0.6 * i["f"],
+          "thesis: the optimum cuts max |1/R| 5.8x; objective lowered > 40 %")
+c.at_least(f"case 2 best ({best2}) contact ratio", b["eps"], 1.0, "constraint eps >= 1")
+c.at_most(f"case 2 best ({best2}) mean |1/R|", b["mean"], 0.1130, T61 + ": at least as low")
+c.info(f"case 2 best ({best2}) max |1/R|", b["max"], 0.1148, "not reproduced: larger spread, see README")
+c.info(f"case 2 best ({best2}) std 1/R", b["std"], 0.0014, "not reproduced: see README")
+c.info(f"case 2 best ({best2}) objective", b["f"], r2["thesis optimum (case 2)"]["f"],
+       "thesis objective estimated with our flank extent")
+
+pair = {}
+with open(os.path.join(a.out, "case2_profile", "pair.csv")) as f:
+    for line in f.read().splitlines()[1:]:
+        q, v = line.split(",")[:2]
+        try:
+            pair[q] = float(v)
+        except ValueError:
+            pass
+eps_gp = pair.get("transverse contact ratio")
+c.rel("case 2 optimum: gearfem profile contact ratio vs optimiser", eps_gp, b["eps"], 0.005,
+      "GearPair's rack-generated path (independent construction)")
+
+
+def fe(d):
+    """Mean over the positions of the largest Hertz pressure of the pairs in contact (FE load
+    share, local curvatures) and of the pinion root stress; mean FE p_max."""
+    import csv
+    base = os.path.join(a.out, f"fe_{d}")
+    sw = list(csv.DictReader(open(os.path.join(base, "sweep.csv"))))
+    ph = {}
+    for r in csv.DictReader(open(os.path.join(base, "pairs.csv"))):
+        k = r["position [-]"]
+        ph[k] = max(ph.get(k, 0.0), float(r["p_Hertz [MPa]"]))
+    n = len(sw)
+    return (sum(ph.values()) / len(ph), sum(float(r["p_max [MPa]"]) for r in sw) / n,
+            sum(float(r["root stress pinion [MPa]"]) for r in sw) / n)
+
+
+fi = fe("involute")
+T71 = "thesis Table 7.1 (ANSYS, b not stated)"
+c.rel("FE involute: mean contact pressure (Hertz at the FE load share)", fi[0], 241.4067, 0.05, T71, " MPa")
+c.info("FE involute: mean root stress pinion [MPa]", fi[2], 14.7187, "definition and face width not stated by the thesis")
+if not os.path.exists(os.path.join(a.out, "fe_optimum", "sweep.csv")):
+    log = open(os.path.join(a.out, "fe_optimum.log")).read().splitlines()
+    c.info("FE optimum", "failed", "-", next((l for l in log if "error" in l), "no sweep.csv"))
+    sys.exit(c.finish())
+fo = fe("optimum")
+c.info("FE optimum/involute: contact pressure ratio", fo[0] / fi[0], 210.02 / 241.4067, "our case-2 optimum, not the thesis'")
+c.info("FE optimum/involute: root stress ratio", fo[2] / fi[2], 11.40 / 14.7187, "our case-2 optimum, not the thesis'")
+c.info("FE optimum/involute: FE p_max ratio", fo[1] / fi[1], 210.02 / 241.4067, "contact zone (a ~ 10 um) not resolved by h ~ 80 um")
+sys.exit(c.finish())
