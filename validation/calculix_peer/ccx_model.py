@@ -231,10 +231,10 @@ def point_segment_distance(p, segs):
     return np.linalg.norm(p[:, None, :] - q, axis=2).min(axis=1)
 
 
-def mesh_pairs(g, b1, b2, x1, x2, reach=0.6):
+def mesh_pairs(g, b1, b2, x1, x2, reach=0.2):
     """Tooth pairs (pinion tooth i, gear tooth j) whose drive flanks come within `reach` mm:
-    the unloaded gap [mm] (pinion flank/tip nodes to the gear flank/tip polyline) and the
-    radius of the closest pinion point [mm]."""
+    the unloaded gap [mm] (pinion flank/tip nodes to the gear flank/tip polyline), the
+    radius of the closest pinion point [mm] and the closest point (pair frame) [mm]."""
     out = []
     for i in b1.teeth_with(DRIVE_FLANK):
         n1 = b1.group_nodes(tooth_tag(i, DRIVE_FLANK)) + b1.group_nodes(tooth_tag(i, TIP))
@@ -249,15 +249,19 @@ def mesh_pairs(g, b1, b2, x1, x2, reach=0.6):
             d2 = point_segment_distance(p2, _polyline(b1, x1, [tooth_tag(i, DRIVE_FLANK), tooth_tag(i, TIP)]))
             k1, k2 = int(np.argmin(d1)), int(np.argmin(d2))
             gap = min(d1[k1], d2[k2])
-            r1 = float(np.linalg.norm(p1[k1])) if d1[k1] <= d2[k2] else float(
-                np.linalg.norm(x1[n1][np.argmin(np.linalg.norm(p1 - p2[k2], axis=1))]))
+            close = p1[k1] if d1[k1] <= d2[k2] else p2[k2]
+            r1 = float(np.linalg.norm(p1[np.argmin(np.linalg.norm(p1 - close, axis=1))]))
             if gap < reach:
-                out.append((i, j, float(gap), r1))
+                out.append((i, j, float(gap), r1, close))
     return out
 
 
-def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, nu, pinion_slave_radius):
-    """The ccx input for one position: one *STEP per pinion bore rotation [urad]. Returns the
+def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, nu, pinion_slave_radius,
+               band=(1.0, 1.5)):
+    """The ccx input for one position: one *STEP per pinion bore rotation [urad]. The contact
+    surfaces of a tooth pair are the faces within band = (slave, master) radii [mm] of the
+    pair's closest unloaded approach (4-6 Hertz half-widths at LS9: the patch and its
+    movement under load; fewer contact elements converge in fewer ccx iterations). Returns the
     tooth pairs in contact and the node numbering offsets."""
     phi1 = math.radians(phi1_deg)
     x1 = placed(b1, (0.0, 0.0), g["phase1"] + phi1)
@@ -295,15 +299,20 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
     fil2 = {j: [off2 + v + 1 for v in b2.group_nodes(tooth_tag(j, FILLET_DRIVE))] for j in b2.teeth_with(FILLET_DRIVE)}
     nset("FILLETS", sorted({v for s in list(fil1.values()) + list(fil2.values()) for v in s}))
 
-    def surface(name, body, eo, tags):
+    def surface(name, body, xb, eo, tags, centre, radius):
         w(f"*SURFACE, NAME={name}, TYPE=ELEMENT")
+        n = 0
         for tag in tags:
-            for e, f in body.group_faces.get(tag, []):
-                w(f"{eo + e + 1}, S{f}")
+            for (e, f), (a, b) in zip(body.group_faces.get(tag, []), body.group_edges.get(tag, [])):
+                if np.linalg.norm(xb[body.mids[frozenset((a, b))]] - centre) <= radius:
+                    w(f"{eo + e + 1}, S{f}")
+                    n += 1
+        if n == 0:
+            raise ValueError(f"contact surface {name}: no face within {radius} mm of the contact")
 
     w("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n%.6g" % slope)
     contact = []
-    for i, j, gap, r1 in pairs:
+    for i, j, gap, r1, close in pairs:
         # pinion surfaces: drive flank, tip land, drive fillet; gear the same
         s1 = [tooth_tag(i, s) for s in (DRIVE_FLANK, 6, TIP)]
         s2 = [tooth_tag(j, s) for s in (DRIVE_FLANK, 6, TIP)]
@@ -312,11 +321,11 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
         pin_slave = r1 >= pinion_slave_radius  # the pinion's tip is nearer the contact
         sl, ms = f"P{i}_{j}_S", f"P{i}_{j}_M"
         if pin_slave:
-            surface(sl, b1, 0, s1)
-            surface(ms, b2, eoff2, m2)
+            surface(sl, b1, x1, 0, s1, close, band[0])
+            surface(ms, b2, x2, eoff2, m2, close, band[1])
         else:
-            surface(sl, b2, eoff2, s2)
-            surface(ms, b1, 0, m1)
+            surface(sl, b2, x2, eoff2, s2, close, band[0])
+            surface(ms, b1, x1, 0, m1, close, band[1])
         w(f"*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\n{sl}, {ms}")
         contact.append(dict(pinion_tooth=i, gear_tooth=j, gap_mm=gap, slave=1 if pin_slave else 2,
                             slave_name=sl, master_name=ms))

@@ -29,7 +29,7 @@ TOL_STE, TOL_STE_TRANSITION = 0.02, 0.05
 TOL_SHARE = 0.03            # load share, absolute
 TOL_ROOT = 0.05             # peak fillet sigma_1 per gear
 TOL_EQUILIBRIUM = 2e-3      # ccx: contact moment about O1 against the bore reaction
-TOL_PENALTY = 0.01          # ccx: STE shift between kappa 10 and 100
+TOL_PENALTY = 0.03          # ccx: STE shift between kappa 3 and 30 (a sanity bound; README)
 
 
 def main():
@@ -207,6 +207,9 @@ def main():
               "|---|---|---|---|---|---|",
               f"| gearfem solve (mesh, assembly, factorisation, all positions) | 1 | {len(positions)} x {len(torques)} | "
               f"{g_row['wall_s']:.1f} | {g_row['cpu_s']:.1f} | {g_row['wall_s'] / len(positions):.2f} |"]
+    g_pos = sum(r["time"] for r in gs)  # gearfem's per-position times (contact + post), set-up excluded
+    timing.append(f"| gearfem, positions only (the `time` column of sweep.csv: contact + post, no set-up) | 1 | "
+                  f"{len(positions)} x {len(torques)} | {g_pos:.1f} | — | {g_pos / len(positions):.2f} |")
     ratios = {}
     for k in kappas:
         rows = [r for r in tm if r["kappa"] == k and int(r["position"]) >= 0]
@@ -216,7 +219,10 @@ def main():
         ratios[k] = (w / len(rows) / (g_row["wall_s"] / len(positions)),
                      cpu / len(rows) / (g_row["cpu_s"] / len(positions)))
     for k, (rw, rc) in ratios.items():
-        timing.append(f"\nccx (kappa {k:g}) / gearfem, per position (both torques): wall {rw:.0f}x, CPU {rc:.0f}x")
+        rows = [r for r in tm if r["kappa"] == k and int(r["position"]) >= 0]
+        marg = sum(r["wall_s"] for r in rows) / len(rows) / (g_pos / len(positions))
+        timing.append(f"\nccx (kappa {k:g}) / gearfem, per position (both torques): wall {rw:.0f}x, CPU {rc:.0f}x "
+                      f"(gearfem's set-up included); wall {marg:.0f}x against gearfem's positions alone")
         c.info(f"speed: ccx (kappa {k:g}) / gearfem per position, wall | CPU", f"{rw:.0f}x | {rc:.0f}x", "—",
                "measured in this run (timing.md)")
     c.true("both programs timed in this run", g_row["wall_s"] > 0 and all(r["wall_s"] > 0 for r in tm),

@@ -11,7 +11,7 @@ import argparse
 import csv
 import math
 import os
-import resource
+from concurrent.futures import ThreadPoolExecutor, as_completed
 import subprocess
 import sys
 import time
@@ -21,17 +21,16 @@ import ccx_model as cm  # noqa: E402
 from vcheck import read_csv  # noqa: E402
 
 
-def children_cpu():
-    r = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return r.ru_utime + r.ru_stime
-
-
 def timed(cmd, log, env=None, cwd=None):
-    """Runs cmd with nice -n 15, output to log; returns (wall, cpu) [s]."""
-    c0, t0 = children_cpu(), time.time()
+    """Runs cmd with nice -n 15, output to log; returns (wall, cpu) [s], the CPU time (user +
+    system) of this child alone (os.wait4), so that two runs side by side are timed apart."""
+    t0 = time.time()
     with open(log, "w") as f:
-        rc = subprocess.call(["nice", "-n", "15"] + cmd, stdout=f, stderr=subprocess.STDOUT, env=env, cwd=cwd)
-    wall, cpu = time.time() - t0, children_cpu() - c0
+        proc = subprocess.Popen(["nice", "-n", "15"] + cmd, stdout=f, stderr=subprocess.STDOUT, env=env, cwd=cwd)
+        _, status, ru = os.wait4(proc.pid, 0)
+        proc.returncode = os.waitstatus_to_exitcode(status)
+    rc = proc.returncode
+    wall, cpu = time.time() - t0, ru.ru_utime + ru.ru_stime
     if rc != 0:
         sys.exit(f"calculix_peer: FAIL ({' '.join(cmd[:2])} exited with {rc}; see {log})")
     return wall, cpu
@@ -61,10 +60,12 @@ def main():
     ap.add_argument("--prm", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--ccx", default="ccx")
-    ap.add_argument("--kappas", default="100,10",
+    ap.add_argument("--kappas", default="30,3",
                     help="ccx penalty factors kappa: slope K = kappa E / h_contact [N/mm^3]")
     ap.add_argument("--kappa-positions", default="",
                     help="kappa:comma-separated position indices, to run a kappa at a subset only")
+    ap.add_argument("--jobs", type=int, default=2,
+                    help="ccx runs side by side (each single-threaded; timed apart by their own CPU time)")
     ap.add_argument("--reuse", action="store_true",
                     help="development only: reuse finished ccx runs (their recorded times) and gearfem's run")
     a = ap.parse_args()
@@ -103,11 +104,15 @@ def main():
     if a.kappa_positions:
         k, idx = a.kappa_positions.split(":")
         subset[float(k)] = [int(i) for i in idx.split(",")]
-    jobs = [(k, p) for k in kappas for p in subset.get(k, positions)]
+    # the penalty pairs first, so that a late stop still shows the penalty sensitivity
+    jobs = [(k, p) for p in positions for k in kappas if p in subset.get(k, positions)]
+    jobs.sort(key=lambda kp: (not all(kp[1] in subset.get(k, positions) for k in kappas), positions.index(kp[1])))
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_STIFFNESS="1", CCX_NPROC_EQUATION_SOLVER="1")
     sweep_rows, pair_rows, time_rows = [], [], []
-    t_all, wall_done = time.time(), 0.0
-    for n, (kappa, p) in enumerate(jobs, 1):
+    t_all = time.time()
+
+    def run_one(job_kp):
+        kappa, p = job_kp
         slope = kappa * E / h_contact
         job = f"k{kappa:g}_p{p}"
         d = f"{out}/ccx/{job}"
@@ -123,40 +128,51 @@ def main():
             wall, cpu = timed([a.ccx, job], f"{d}/{job}.log", env=env, cwd=d)
             with open(f"{d}/{job}.time", "w") as f:
                 f.write(f"{wall} {cpu}\n")
-        wall_done += wall
-        steps = cm.read_dat(f"{d}/{job}.dat", model)
-        stress = cm.read_frd_stress(f"{d}/{job}.frd")
-        if len(steps) != len(torques) or len(stress) != len(torques):
-            sys.exit(f"calculix_peer: FAIL (ccx {job}: {len(steps)} steps in the .dat, {len(stress)} in the .frd, "
-                     f"expected {len(torques)}; see {d}/{job}.log)")
-        for t, st, sb in zip(torques, steps, stress):
-            def peak(fil):
-                best = {}
-                for k, nodes in fil.items():
-                    vals = [cm.sigma1(sb[v]) for v in nodes if v in sb]
-                    if vals:
-                        best[k] = max(vals)
-                return best
-            r1, r2 = peak(model["fillets1"]), peak(model["fillets2"])
-            Fsum = sum(q["F"] for q in st["pairs"])
-            sweep_rows.append(dict(kappa=kappa, slope_N_per_mm3=slope, position=p, roll_deg=roll[p], torque_gearfem=t,
-                                   dtheta_urad=dth[(t, p)], T1_reaction=st["T1"],
-                                   T1_contact_moment=-sum(q["M1"] for q in st["pairs"]), T2=st["T2"],
-                                   F_n_sum=Fsum, root_pinion=max(r1.values()), root_gear=max(r2.values())))
-            for q in st["pairs"]:
-                pair_rows.append(dict(kappa=kappa, position=p, roll_deg=roll[p], torque_gearfem=t,
-                                      pinion_tooth=q["pinion_tooth"], gear_tooth=q["gear_tooth"], slave=q["slave"],
-                                      unloaded_gap_um=q["gap_mm"] * 1e3, F=q["F"],
-                                      share=q["F"] / Fsum if Fsum > 0 else 0.0,
-                                      root_pinion=r1.get(q["pinion_tooth"], float("nan")),
-                                      root_gear=r2.get(q["gear_tooth"], float("nan"))))
-        time_rows.append(dict(kappa=kappa, position=p, roll_deg=roll[p], wall_s=wall, cpu_s=cpu))
-        eta = wall_done / n * (len(jobs) - n)
-        print(f"ccx {n}/{len(jobs)}  kappa {kappa:g}, roll {roll[p]:+.2f} deg: wall {wall:.1f} s, CPU {cpu:.1f} s, "
-              f"T1 {', '.join('%.2f' % s['T1'] for s in steps)} N m (gearfem {', '.join('%g' % t for t in torques)}); "
-              f"elapsed {time.time() - t_all:.0f} s, ETA {eta:.0f} s", flush=True)
-        write_csv(f"{out}/ccx_sweep.csv", sweep_rows)
-        write_csv(f"{out}/ccx_pairs.csv", pair_rows)
+        return kappa, p, slope, job, d, model, wall, cpu
+
+    done = 0
+    cpu_done = 0.0
+    with ThreadPoolExecutor(max_workers=a.jobs) as pool:
+        for kappa, p, slope, job, d, model, wall, cpu in (f.result() for f in as_completed(
+                [pool.submit(run_one, jk) for jk in jobs])):
+            done += 1
+            steps = cm.read_dat(f"{d}/{job}.dat", model)
+            stress = cm.read_frd_stress(f"{d}/{job}.frd")
+            if len(steps) != len(torques) or len(stress) != len(torques):
+                sys.exit(f"calculix_peer: FAIL (ccx {job}: {len(steps)} steps in the .dat, {len(stress)} in the .frd, "
+                         f"expected {len(torques)}; see {d}/{job}.log)")
+            for t, st, sb in zip(torques, steps, stress):
+                def peak(fil):
+                    best = {}
+                    for k, nodes in fil.items():
+                        vals = [cm.sigma1(sb[v]) for v in nodes if v in sb]
+                        if vals:
+                            best[k] = max(vals)
+                    return best
+                r1, r2 = peak(model["fillets1"]), peak(model["fillets2"])
+                Fsum = sum(q["F"] for q in st["pairs"])
+                sweep_rows.append(dict(kappa=kappa, slope_N_per_mm3=slope, position=p, roll_deg=roll[p],
+                                       torque_gearfem=t, dtheta_urad=dth[(t, p)], T1_reaction=st["T1"],
+                                       T1_contact_moment=-sum(q["M1"] for q in st["pairs"]), T2=st["T2"],
+                                       F_n_sum=Fsum, root_pinion=max(r1.values()), root_gear=max(r2.values())))
+                for q in st["pairs"]:
+                    pair_rows.append(dict(kappa=kappa, position=p, roll_deg=roll[p], torque_gearfem=t,
+                                          pinion_tooth=q["pinion_tooth"], gear_tooth=q["gear_tooth"], slave=q["slave"],
+                                          unloaded_gap_um=q["gap_mm"] * 1e3, F=q["F"],
+                                          share=q["F"] / Fsum if Fsum > 0 else 0.0,
+                                          root_pinion=r1.get(q["pinion_tooth"], float("nan")),
+                                          root_gear=r2.get(q["gear_tooth"], float("nan"))))
+            time_rows.append(dict(kappa=kappa, position=p, roll_deg=roll[p], wall_s=wall, cpu_s=cpu))
+            cpu_done += cpu
+            el = time.time() - t_all
+            eta = el / done * (len(jobs) - done)
+            print(f"ccx {done}/{len(jobs)}  kappa {kappa:g}, roll {roll[p]:+.2f} deg: wall {wall:.1f} s, CPU {cpu:.1f} s, "
+                  f"T1 {', '.join('%.2f' % s['T1'] for s in steps)} N m (gearfem {', '.join('%g' % t for t in torques)}); "
+                  f"elapsed {el:.0f} s, ETA {eta:.0f} s", flush=True)
+            key = lambda r: (-r["kappa"], r["position"])
+            write_csv(f"{out}/ccx_sweep.csv", sorted(sweep_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
+            write_csv(f"{out}/ccx_pairs.csv", sorted(pair_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
+    time_rows.sort(key=key)
     time_rows.append(dict(kappa=0, position=-1, roll_deg=float("nan"), wall_s=g_wall, cpu_s=g_cpu))
     write_csv(f"{out}/timing.csv", time_rows)
     print(f"== ccx: {len(jobs)} runs in {time.time() - t_all:.0f} s", flush=True)
