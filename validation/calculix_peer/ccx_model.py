@@ -355,7 +355,6 @@ def read_dat(path, model):
     """Per step: T1 from the pinion bore reactions [N m], the gear bore moment about O2
     [N m], and per contact pair the force and moment about O1 [N, N m]."""
     x1, x2, off2 = model["x1"], model["x2"], model["off2"]
-    O2 = np.array([0.0, x2[:, 1].mean() * 0])  # placeholder, replaced below
     steps, cur = [], None
     with open(path) as f:
         text = f.read().split("\n")
@@ -379,13 +378,18 @@ def read_dat(path, model):
             continue
         m = re.match(r"\s*statistics for slave set (\S+), master set (\S+) and time\s+(\S+)", s)
         if m:
-            vals = text[i + 2].split()
+            j = i + 1
+            while "total surface force" not in text[j]:
+                j += 1
+            j += 1
+            while not text[j].strip():
+                j += 1
+            vals = text[j].split()
             cur["cf"].append(dict(slave=m.group(1), master=m.group(2), F=[float(v) for v in vals[:3]],
                                   M=[float(v) for v in vals[3:6]]))
             i += 3
             continue
         i += 1
-    del O2
     out = []
     for st in steps:
         def moment(rows, xy, off, centre):

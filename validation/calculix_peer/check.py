@@ -50,6 +50,9 @@ def main():
     positions = sorted({int(r["position"]) for r in gs})
     roll = {int(r["position"]): r["roll angle"] for r in gs}
     G = {(r["torque"], int(r["position"])): r for r in gs}
+    F = {}
+    if os.path.exists(f"{out}/gearfem_fine/sweep.csv"):
+        F = {(r["torque"], int(r["position"])): r for r in read_csv(f"{out}/gearfem_fine/sweep.csv")}
     kappas = sorted({r["kappa"] for r in cs}, reverse=True)
     kref = kappas[0]
     C = {(r["kappa"], r["torque_gearfem"], int(r["position"])): r for r in cs}
@@ -93,10 +96,10 @@ def main():
     worst = {}
     for t in torques:
         lines += [f"## T1 = {t:g} N m", "",
-                  "| roll [deg] | pairs | STE gearfem [um] | STE ccx [um] | dSTE [%] | k gearfem [N/(mm um)] | "
+                  "| roll [deg] | pairs | STE gearfem [um] | STE ccx [um] | dSTE [%] | gearfem refined once: dSTE [%] | k gearfem [N/(mm um)] | "
                   "k(same rotation) ccx/gearfem - 1 [%] | load shares gearfem | load shares ccx | max dshare | "
                   "root pinion gearfem / ccx [MPa] | d [%] | root gear gearfem / ccx [MPa] | d [%] |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for p in positions:
             g = G[(t, p)]
             x = ccx_at(kref, t, p)
@@ -111,12 +114,15 @@ def main():
             d_rp = x["root_p"] / g["root stress pinion"] - 1
             d_rg = x["root_g"] / g["root stress gear"] - 1
             fmt = lambda m: " ".join(f"{k[0]}/{k[1]}:{m.get(k, 0):.3f}" for k in keys)
+            d_fine = F[(t, p)]["STE"] / g["STE"] - 1 if (t, p) in F else float("nan")
             lines.append(f"| {roll[p]:+.2f}{' *' if trans else ''} | {int(g['pairs in contact'])} | {g['STE']:.3f} | "
-                         f"{x['ste']:.3f} | {d_ste * 100:+.2f} | {g['k_secant per width']:.2f} | {d_k * 100:+.2f} | "
+                         f"{x['ste']:.3f} | {d_ste * 100:+.2f} | {d_fine * 100:+.2f} | {g['k_secant per width']:.2f} | "
+                         f"{d_k * 100:+.2f} | "
                          f"{fmt(sg)} | {fmt(sc)} | {dsh:.4f} | {g['root stress pinion']:.1f} / {x['root_p']:.1f} | "
                          f"{d_rp * 100:+.2f} | {g['root stress gear']:.1f} / {x['root_g']:.1f} | {d_rg * 100:+.2f} |")
             tag = "transition" if trans else "away"
-            for name, v in (("ste", d_ste), ("share", dsh), ("root_p", d_rp), ("root_g", d_rg), ("k_rot", d_k)):
+            for name, v in (("ste", d_ste), ("share", dsh), ("root_p", d_rp), ("root_g", d_rg), ("k_rot", d_k),
+                            ("fine", d_fine)):
                 key = (name, tag)
                 if key not in worst or abs(v) > abs(worst[key][0]):
                     worst[key] = (v, t, roll[p])
@@ -145,6 +151,10 @@ def main():
         c.at_most(f"ccx equilibrium |M_contact/T1_reaction - 1| (worst: {t:g} N m, {r:+.2f} deg)", v,
                   TOL_EQUILIBRIUM, "statics (ccx's own)")
     for tag in ("away", "transition"):
+        if ("fine", tag) in worst and not math.isnan(worst[("fine", tag)][0]):
+            v, t, r = worst[("fine", tag)]
+            c.info(f"gearfem STE, one global refinement / default mesh - 1, {tag} (worst: {t:g} N m, {r:+.2f} deg)",
+                   f"{v * 100:+.2f} %", "—", "gearfem's own mesh sensitivity (inputs/fzg_c_ccx_fine.prm)")
         if ("k_rot", tag) in worst:
             v, t, r = worst[("k_rot", tag)]
             c.info(f"secant stiffness at the same rotation, ccx/gearfem - 1, {tag} (worst: {t:g} N m, {r:+.2f} deg)",

@@ -16,5 +16,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
 export PYTHONPATH="$root/validation/lib${PYTHONPATH:+:$PYTHONPATH}"
 /usr/bin/python3 "$here/run_peer.py" --gearfem "$gearfem" --prm "$root/inputs/fzg_c_ccx.prm" --out "$out" \
+  --fine-prm "$root/inputs/fzg_c_ccx_fine.prm" \
   --ccx "${CCX:-ccx}" --kappas 30,3 --kappa-positions 3:2,4 "$@"
 check --out "$out" --table "$here/table.md" --plot "$here/comparison.png"
