@@ -257,12 +257,18 @@ def mesh_pairs(g, b1, b2, x1, x2, reach=0.2):
 
 
 def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, nu, pinion_slave_radius,
-               band=(1.0, 1.5)):
+               band=(1.0, 1.5), slab=1e-3):
     """The ccx input for one position: one *STEP per pinion bore rotation [urad]. The contact
     surfaces of a tooth pair are the faces within band = (slave, master) radii [mm] of the
     pair's closest unloaded approach (4-6 Hertz half-widths at LS9: the patch and its
-    movement under load; fewer contact elements converge in fewer ccx iterations). Returns the
-    tooth pairs in contact and the node numbering offsets."""
+    movement under load; fewer contact elements converge in fewer ccx iterations).
+
+    Plane stress: ccx expands a CPS8 element into a 3-D C3D20 slab of the section thickness,
+    which is plane stress only when the slab is thin against the in-plane sizes (a CPS8
+    cantilever 1 mm deep deflects like plane stress at thickness 0.1 mm, -0.3 %, but like plane
+    strain at 14 mm). So the slab is `slab` x thickness thick and every force and moment read
+    back is scaled by 1/slab (stresses and the pressure-overclosure slope do not change).
+    Returns the tooth pairs in contact and the node numbering offsets."""
     phi1 = math.radians(phi1_deg)
     x1 = placed(b1, (0.0, 0.0), g["phase1"] + phi1)
     x2 = placed(b2, (0.0, g["a"]), g["phase2"] - phi1 / g["u"])
@@ -283,7 +289,7 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
             w(f"{eo + e + 1}, " + ", ".join(str(no + v + 1) for v in q))
     w("*MATERIAL, NAME=STEEL\n*ELASTIC\n%.8g, %.8g" % (E, nu))
     for name in ("G1", "G2"):
-        w(f"*SOLID SECTION, ELSET={name}, MATERIAL=STEEL\n{thickness:.8g}")
+        w(f"*SOLID SECTION, ELSET={name}, MATERIAL=STEEL\n{thickness * slab:.8g}")
 
     def nset(name, ids):
         w(f"*NSET, NSET={name}")
@@ -347,7 +353,7 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
         f.write("\n".join(L) + "\n")
     os.replace(tmp, path)
     return dict(contact=contact, x1=x1, x2=x2, off2=off2, fillets1=fil1, fillets2=fil2,
-                bore1=bore1, bore2=bore2)
+                bore1=bore1, bore2=bore2, force_scale=1.0 / slab)
 
 
 # --------------------------------------------------------------------------- results
@@ -397,15 +403,15 @@ def read_dat(path, model):
             for n, fx, fy in rows:
                 x, y = xy[n - 1 - off] - centre
                 M += x * fy - y * fx
-            return M * 1e-3  # N mm -> N m
+            return M * 1e-3 * model["force_scale"]  # N mm -> N m, slab -> face width
         T1 = moment(st["sets"]["BORE1"], x1, 0, np.zeros(2))
         O2c = np.array([0.0, float(np.mean(x2[[n - 1 - off2 for n, _, _ in st["sets"]["BORE2"]]][:, 1]))])
         T2 = moment(st["sets"]["BORE2"], x2, off2, O2c)
         pairs = []
         for c, cf in zip(model["contact"], st["cf"]):
-            F = np.array(cf["F"][:2])
+            F = np.array(cf["F"][:2]) * model["force_scale"]
             # moment about O1 of the force on the pinion (the slave force, or minus it)
-            Mz = cf["M"][2] * 1e-3
+            Mz = cf["M"][2] * 1e-3 * model["force_scale"]
             sign = 1.0 if c["slave"] == 1 else -1.0
             pairs.append(dict(c, F=float(np.linalg.norm(F)), M1=sign * Mz))
         out.append(dict(T1=T1, T2=T2, pairs=pairs))

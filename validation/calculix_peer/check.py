@@ -57,6 +57,18 @@ def main():
     kref = kappas[0]
     C = {(r["kappa"], r["torque_gearfem"], int(r["position"])): r for r in cs}
 
+    # ---- ccx's plane stress (slab_check.py): the thin slab the decks use, against Timoshenko
+    if os.path.exists(f"{out}/slab_check.csv"):
+        sl = read_csv(f"{out}/slab_check.csv")
+        thin, thick = sl[0], sl[-1]
+        c.rel(f"ccx CPS8 cantilever, slab {thin['thickness_mm']:g} mm: tip deflection", thin["tip_deflection_mm"],
+              thin["timoshenko_plane_stress_mm"], 0.005, "Timoshenko beam, plane stress", " mm")
+        c.info(f"ccx CPS8 cantilever, thickness {thick['thickness_mm']:g} mm, against plane strain",
+               f"{(thick['tip_deflection_mm'] / thick['timoshenko_plane_strain_mm'] - 1) * 100:+.2f} %", "—",
+               "why the decks use a thin slab (README)")
+    else:
+        c.true("ccx plane-stress slab check ran", False, "missing", "results/slab_check.csv", "slab_check.py")
+
     # ---- coverage: what the issue asks for
     rolls = np.array([roll[p] for p in positions])
     both_sides = lambda x: bool(((rolls < x) & (rolls > x - 0.5)).any() and ((rolls > x) & (rolls < x + 0.5)).any())

@@ -15,6 +15,8 @@ fi
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
 export PYTHONPATH="$root/validation/lib${PYTHONPATH:+:$PYTHONPATH}"
+echo "== ccx plane stress: CPS8 cantilever at three section thicknesses (slab_check.py)"
+/usr/bin/python3 "$here/slab_check.py" --ccx "${CCX:-ccx}" --out "$out"
 /usr/bin/python3 "$here/run_peer.py" --gearfem "$gearfem" --prm "$root/inputs/fzg_c_ccx.prm" --out "$out" \
   --fine-prm "$root/inputs/fzg_c_ccx_fine.prm" \
   --ccx "${CCX:-ccx}" --kappas 30,3 --kappa-positions 3:2,4 "$@"

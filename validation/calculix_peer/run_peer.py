@@ -65,7 +65,7 @@ def main():
     ap.add_argument("--kappa-positions", default="",
                     help="kappa:comma-separated position indices, to run a kappa at a subset only")
     ap.add_argument("--fine-prm", default="",
-                    help="the same case on a finer contact mesh (gearfem only): its mesh sensitivity")
+                    help="the same case on a refined mesh (gearfem only): its own mesh sensitivity")
     ap.add_argument("--jobs", type=int, default=2,
                     help="ccx runs side by side (each single-threaded; timed apart by their own CPU time)")
     ap.add_argument("--reuse", action="store_true",
@@ -86,7 +86,7 @@ def main():
             f.write(f"{g_wall} {g_cpu}\n")
     print(f"   gearfem solve: wall {g_wall:.1f} s, CPU {g_cpu:.1f} s", flush=True)
     if a.fine_prm and not (a.reuse and os.path.exists(f"{out}/gearfem_fine/sweep.csv")):
-        print("== gearfem solve on the finer contact mesh (not timed against ccx)", flush=True)
+        print("== gearfem solve on the refined mesh (one global refinement; not timed against ccx)", flush=True)
         timed([a.gearfem, "solve", a.fine_prm, "--output-dir", f"{out}/gearfem_fine"], f"{out}/gearfem_fine.log")
     sweep = read_csv(f"{out}/gearfem/sweep.csv")
     torques = sorted({r["torque"] for r in sweep})
