@@ -207,7 +207,7 @@ def main():
     for t in torques:
         for p in positions:
             xs = [ccx_at(k, t, p) for k in kappas]
-            if any(x is None for x in xs):
+            if len(kappas) < 2 or any(x is None for x in xs):
                 continue
             s = [x["ste"] for x in xs]
             k_hi, k_lo = kappas[0], kappas[-1]
