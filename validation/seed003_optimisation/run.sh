@@ -32,8 +32,27 @@ for d in involute optimum; do
   fi
   grep -v "ETA" "$out/fe_$d.log" | tail -n 2
 done
-cp "$out/case1/summary.md" "$here/case1_summary.md"
-cp "$out/case2/summary.md" "$here/case2_summary.md"
+# The tracked summaries without the wall-time column (issue 17: a tracked table changes only
+# when a number changes; the timings stay in $out/case*/summary.md).
+for c in 1 2; do
+  /usr/bin/python3 - "$out/case$c/summary.md" "$here/case${c}_summary.md" <<'PY'
+import os, sys
+drop = None
+out = []
+for line in open(sys.argv[1]):
+    if line.startswith("|"):
+        cells = line.rstrip("\n").split("|")
+        if drop is None and "wall time [s]" in [c.strip() for c in cells]:
+            drop = [c.strip() for c in cells].index("wall time [s]")
+        if drop is not None and len(cells) > drop:
+            del cells[drop]
+        line = "|".join(cells) + "\n"
+    out.append(line)
+tmp = sys.argv[2] + ".tmp"
+open(tmp, "w").write("".join(out))
+os.replace(tmp, sys.argv[2])
+PY
+done
 for f in curvature profiles convergence; do
   for c in 1 2; do
     [ -f "$out/case$c/$f.png" ] && cp "$out/case$c/$f.png" "$here/case${c}_$f.png"
