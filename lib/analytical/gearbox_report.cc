@@ -206,4 +206,47 @@ namespace gearfem::analytical::gearbox
     write_file_atomically(dir / "gearbox_life.csv", l.str());
     write_file_atomically(dir / "scuffing_path.csv", p.str());
   }
+
+  GearboxTables gearbox_tables(const GearboxInput &in, const GearboxResult &r)
+  {
+    GearboxTables t;
+    for (const auto &[n, u] : std::vector<std::pair<const char *, const char *>>{
+           {"input torque", "N m"}, {"F_t", "N"}, {"sigma_H", "MPa"}, {"sigma_F1", "MPa"}, {"sigma_F2", "MPa"},
+           {"ISO sigma_H1", "MPa"}, {"ISO sigma_H2", "MPa"}, {"theta_fl_max", "K"}, {"theta_B_max", "C"},
+           {"h_c_min", "um"}, {"lambda_min", "-"}, {"P_scuffing", "-"}})
+      t.meshes.add_column(n, u);
+    for (std::size_t k = 0; k < r.train.stages.size(); ++k)
+      {
+        const Stage &st = r.train.stages[k];
+        for (std::size_t j = 0; j < st.meshes.size(); ++j)
+          for (std::size_t b = 0; b < in.spectrum.torques.size(); ++b)
+            {
+              const MeshStress &m       = r.stress[k][j][b];
+              const scuffing::Result &c = r.scuff[k][j][b];
+              const double T            = in.spectrum.torques[b];
+              t.meshes.add_row({T, st.tangential_load(r.train.torques(T)[k]), m.sigma_H / 1e6, m.sigma_F1 / 1e6,
+                                m.sigma_F2 / 1e6, m.sigma_H1_iso / 1e6, m.sigma_H2_iso / 1e6, c.theta_fl_max,
+                                c.theta_B_max, c.h_c_min * 1e6, c.lambda_min, c.P});
+              t.mesh_stage.push_back(st.in.name);
+              t.mesh_name.push_back(st.meshes[j].name);
+            }
+      }
+    t.lives.add_column("cycles per input revolution", "-");
+    t.lives.add_column("damage D", "-");
+    t.lives.add_column("damaged", "-");
+    t.lives.add_column("life", "spectra");
+    t.lives.add_column("life", "years");
+    for (const MemberLife &m : r.lives)
+      {
+        const bool damaged = m.damage.D > 0.0 && std::isfinite(m.damage.life_spectra);
+        t.lives.add_row({m.cycles_per_revolution, m.damage.D, damaged ? 1.0 : 0.0,
+                         damaged ? m.damage.life_spectra : 0.0,
+                         damaged && std::isfinite(m.life_years) ? m.life_years : 0.0});
+        t.life_stage.push_back(m.stage);
+        t.life_member.push_back(m.member);
+        t.life_mode.push_back(m.mode);
+        t.life_load.push_back(m.detail);
+      }
+    return t;
+  }
 } // namespace gearfem::analytical::gearbox

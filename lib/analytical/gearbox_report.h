@@ -3,15 +3,29 @@
 // scuffing and lives), gearbox.csv (one row per stage, mesh and bin), gearbox_life.csv
 // (one row per member and mode) and scuffing_path.csv (the path of contact of the worst
 // bin). Engineering units in the files; all written atomically; never NaN (an infinite
-// life is written as "inf").
+// life is written as "inf"). gearbox_tables gives the numbers of gearbox.csv and
+// gearbox_life.csv as tables, for gearbox.h5 (written by the command through lib/io).
 #include "analytical/gearbox_life.h"
+#include "base/table.h"
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace gearfem::analytical::gearbox
 {
   void write_markdown(const GearboxInput &in, const GearboxResult &r, const std::string &stress_source,
                       const std::filesystem::path &file, const std::string &title);
   void write_csv(const GearboxInput &in, const GearboxResult &r, const std::filesystem::path &dir);
+
+  /// The numbers of gearbox.csv (`meshes`: one row per stage, mesh and bin) and of
+  /// gearbox_life.csv (`lives`: one row per member and mode), in the same engineering units,
+  /// with their text columns. A life without damage is 0 with `damaged [-]` = 0 (HDF5 holds
+  /// no inf or NaN).
+  struct GearboxTables
+  {
+    Table meshes, lives;
+    std::vector<std::string> mesh_stage, mesh_name, life_stage, life_member, life_mode, life_load;
+  };
+  GearboxTables gearbox_tables(const GearboxInput &in, const GearboxResult &r);
 } // namespace gearfem::analytical::gearbox

@@ -6,6 +6,7 @@
 #include "analytical/gearbox_report.h"
 #include "base/errors.h"
 #include "commands/command.h"
+#include "io/solve_results.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -40,6 +41,13 @@ namespace gearfem::commands
       gb::write_markdown(in, r, source, ctx.output_dir / "gearbox.md",
                          "Gearbox rating (" + ctx.input_file.filename().string() + ")");
       gb::write_csv(in, r, ctx.output_dir);
+      const gb::GearboxTables t = gb::gearbox_tables(in, r);
+      io::write_table_file({{"meshes", &t.meshes}, {"lives", &t.lives}}, ctx.output_dir / "gearbox.h5",
+                           {{"format", "gearfem-gearbox"}, {"format_version", "1"},
+                            {"input", ctx.input_file.filename().string()}, {"stress source", source}},
+                           {{"meshes", "stage [text]", t.mesh_stage}, {"meshes", "mesh [text]", t.mesh_name},
+                            {"lives", "stage [text]", t.life_stage}, {"lives", "member [text]", t.life_member},
+                            {"lives", "mode [text]", t.life_mode}, {"lives", "load [text]", t.life_load}});
 
       const auto n = r.train.speeds();
       out << "output speed " << n.back() << " rpm\n";
@@ -55,7 +63,7 @@ namespace gearfem::commands
         out << "no member is damaged by this spectrum\n";
       run_plot_script("plot_gearbox.py", {ctx.output_dir.string()}, ctx.out);
       out << "wrote " << (ctx.output_dir / "gearbox.md").string()
-          << ", gearbox.csv, gearbox_life.csv, scuffing_path.csv\n";
+          << ", gearbox.csv, gearbox_life.csv, gearbox.h5, scuffing_path.csv\n";
     }
   } // namespace
 
@@ -72,7 +80,8 @@ namespace gearfem::commands
       "bending stresses of every mesh (internal meshes with the lower signs), load cycles per\n"
       "member, Miner damage with the semi-log S-N line or the ISO 6336 life factors, life in\n"
       "spectra and years, and AGMA 925 scuffing along the path of contact. Writes gearbox.md\n"
-      "(every factor with its clause), gearbox.csv, gearbox_life.csv, scuffing_path.csv and,\n"
+      "(every factor with its clause), gearbox.csv, gearbox_life.csv, gearbox.h5 (the same\n"
+      "numbers), scuffing_path.csv and,\n"
       "with /usr/bin/python3 and matplotlib, gearbox_damage.png and scuffing_path.png.\n\n"
       "Sample runs:\n"
       "  gearfem gearbox inputs/seed001_gearbox.prm\n"

@@ -208,9 +208,44 @@ PY
     "$gearfem" gearbox "$arg/inputs/seed001_gearbox_thesis_stresses.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
       { cat "$work/stdout"; fail "gearbox run failed"; }
     cat "$work/stdout"
-    for f in gearbox.md gearbox.csv gearbox_life.csv scuffing_path.csv; do
+    for f in gearbox.md gearbox.csv gearbox_life.csv gearbox.h5 scuffing_path.csv; do
       [ -s "$work/out/$f" ] || fail "missing $f"
     done
+    # gearbox.h5 holds the numbers of the two CSV files (read back with h5py, if present).
+    /usr/bin/python3 - "$work/out" <<'PY' || fail "gearbox.h5 differs from gearbox.csv / gearbox_life.csv"
+import csv, math, sys
+try:
+    import h5py
+except ImportError:
+    sys.exit(0)
+d = sys.argv[1]
+f = h5py.File(f"{d}/gearbox.h5", "r")
+assert f.attrs["format"] in ("gearfem-gearbox", b"gearfem-gearbox")
+rows = list(csv.reader(open(f"{d}/gearbox.csv")))
+head, rows = rows[0], rows[1:]
+m = f["meshes"]
+assert len(m["sigma_H [MPa]"]) == len(rows) > 0
+for h in head[2:]:
+    v = m[h][()]
+    for x, r in zip(v, rows):
+        y = float(r[head.index(h)])
+        # the CSV prints 6 (temperatures, film) to 10 (stresses) significant digits
+        assert abs(x - y) <= 1e-5 * max(1e-9, abs(y)), (h, x, y)
+stages = [s.decode() if isinstance(s, bytes) else s for s in m["stage [text]"][()]]
+assert stages == [r[0] for r in rows]
+life = list(csv.reader(open(f"{d}/gearbox_life.csv")))
+lh, life = life[0], life[1:]
+l = f["lives"]
+D, dam, sp = l["damage D [-]"][()], l["damaged [-]"][()], l["life [spectra]"][()]
+assert len(D) == len(life)
+for k, r in enumerate(life):
+    assert abs(D[k] - float(r[5])) <= 1e-9 * max(1e-12, abs(float(r[5]))), (k, D[k], r[5])
+    if r[6] in ("", "inf"):
+        assert dam[k] == 0 and sp[k] == 0, (k, dam[k], sp[k])
+    else:
+        assert dam[k] == 1 and abs(sp[k] / float(r[6]) - 1) < 1e-5, (k, sp[k], r[6])  # 6 digits in the CSV
+print(f"gearbox.h5: {len(rows)} mesh rows and {len(life)} life rows equal the CSV files")
+PY
     ls -A "$work/out" | grep -q 'tmp' && fail "temporary file left behind"
     awk -F, 'function ok(v, r) { e = (v - r) / r; return e < 0.002 && e > -0.002 }
       NR > 1 && $6 > 0 { n++ }
