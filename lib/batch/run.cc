@@ -32,7 +32,8 @@ namespace gearfem::batch
         : jobs_(std::move(jobs)), keys_(std::move(keys)), taken_(jobs_.size(), false)
       {}
       /// Next job for a rank whose cached model has key `key` ("" none); -1 when done.
-      int take(const std::string &key)
+      /// `key` becomes the model key of the job handed out.
+      int take(std::string &key)
       {
         std::lock_guard<std::mutex> lock(m_);
         std::size_t pick = jobs_.size();
@@ -50,15 +51,8 @@ namespace gearfem::batch
         if (pick == jobs_.size())
           return -1;
         taken_[pick] = true;
+        key          = keys_[pick];
         return jobs_[pick];
-      }
-      /// Model key of job `job` ("" if unknown).
-      std::string key_of(int job) const
-      {
-        for (std::size_t k = 0; k < jobs_.size(); ++k)
-          if (jobs_[k] == job)
-            return keys_[k];
-        return "";
       }
 
     private:
@@ -137,8 +131,6 @@ namespace gearfem::batch
               if (msg[0] >= 0)
                 reporter.finished(int(msg[0]), msg[1] > 0, st.MPI_SOURCE, msg[2], msg[3] > 0);
               int next = queue.take(rank_key[st.MPI_SOURCE]);
-              if (next >= 0)
-                rank_key[st.MPI_SOURCE] = queue.key_of(next);
               MPI_Send(&next, 1, MPI_INT, st.MPI_SOURCE, tag_job, MPI_COMM_WORLD);
               if (next < 0)
                 --active;
@@ -152,7 +144,6 @@ namespace gearfem::batch
             std::string key;
             for (int j = queue.take(key); j >= 0; j = queue.take(key))
               {
-                key                  = queue.key_of(j);
                 const JobRecord rec = run_job(study, std::size_t(j), root, &cache);
                 reporter.finished(j, rec.ok(), 0, rec.wall_time, rec.shared_model);
               }
