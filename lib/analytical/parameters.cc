@@ -112,6 +112,11 @@ namespace gearfem::analytical
                       "Mesh cycle with the corner contacts OA/BG of seed 000: outside A..E a pair "
                       "carries load once the deflection closes the rigid gap of its tip corner "
                       "(the single-pair zone narrows with load). Units: none.");
+    prm.declare_entry("Mesh cycle law", "load sharing", Selection("load sharing|seed000 ricker"),
+                      "Law of the mesh-cycle output: equal-deflection load sharing on the "
+                      "Stiffness model, or seed 000's semi-analytical pair stiffness with "
+                      "Ricker-wavelet load sharing (Gkimisis 2019 eqs. 3.18-3.46, its Hertz term "
+                      "linearised with the load-sharing mean stiffness; lib/analytical/cycle_table.h).");
     prm.leave_subsection();
   }
 
@@ -126,6 +131,7 @@ namespace gearfem::analytical
     a.bore_radius2 = 0.5e-3 * params::get_double(prm, "Bore diameter 2");
     a.positions = params::get_integer(prm, "Mesh positions");
     a.corner_contact = params::get_bool(prm, "Corner contact");
+    a.law = cycle_law_from_string(prm.get("Mesh cycle law"));
     prm.leave_subsection();
     if (a.options.model == StiffnessModel::potential_energy && (a.bore_radius1 <= 0 || a.bore_radius2 <= 0))
       throw InputError("Analytical/Bore diameter 1, 2", "0 mm", "> 0 mm",

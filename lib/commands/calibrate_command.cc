@@ -12,6 +12,7 @@
 #include "geometry/parameters.h"
 #include "io/mesh_table_io.h"
 
+#include <chrono>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
@@ -160,6 +161,20 @@ namespace gearfem::commands
       for (const auto &w : r.fit.warnings)
         std::cerr << "warning: " << w << std::endl;
       calibration::comparison_table(r, pc, samples).write_csv(ctx.output_dir / "calibration.csv");
+      {
+        // Cost of the calibrated model: one 40-position cycle from A at the largest FE load
+        // (what a dynamics step or a design loop pays; the speed-against-error study reads it).
+        const an::CalibratedMesh cm(pc, r.fit.factors);
+        const auto &L  = pc.line();
+        const double F = *torques.rbegin() / L.rb1;
+        double sum     = 0;
+        const auto t0  = std::chrono::steady_clock::now();
+        for (int i = 0; i < 40; ++i)
+          sum += cm.ste((L.g_A - L.g_C + i * L.base_pitch / 40) / L.rb1, F);
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        out << "calibrated model: 40-position cycle in " << s * 1e3 << " ms (mean STE " << sum / 40 * 1e6
+            << " um at " << *torques.rbegin() << " N m)\n";
+      }
 
       const io::TableProvenance prov{"gearfem calibrate " + ctx.input_file.filename().string() + " (" + in.model + ")",
                                      now_utc()};

@@ -3,7 +3,7 @@
 // analytical mesh stiffness, loaded STE and load sharing over one pitch per torque.
 // The models live in lib/analytical.
 #include "analytical/from_geometry.h"
-#include "analytical/mesh_cycle.h"
+#include "analytical/cycle_table.h"
 #include "analytical/parameters.h"
 #include "analytical/rating.h"
 #include "base/errors.h"
@@ -13,6 +13,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 
@@ -47,46 +48,33 @@ namespace gearfem::commands
           return;
         }
 
-      const an::RatingReport rep = an::rate(pair, ri);
+      const auto t_rate            = std::chrono::steady_clock::now();
+      const an::RatingReport rep   = an::rate(pair, ri);
+      const double rating_seconds  = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_rate).count();
       rep.write_markdown(ctx.output_dir / "rating.md",
                          "Rating of the " + std::to_string(gi.gear1.teeth) + "/" +
                            std::to_string(gi.gear2.teeth) + " pair (" + ctx.input_file.filename().string() + ")");
       rep.write_csv(ctx.output_dir / "rating.csv");
 
-      // Mesh cycle: stiffness, loaded STE and load per pair over one pitch.
-      an::PairModelOptions o = ai.options;
-      o.plane = pm.plane_strain ? an::PlaneCondition::plane_strain : an::PlaneCondition::plane_stress;
-      const an::PairCompliance pc(an::involute_tooth(pair.gear(1), ai.bore_radius1),
-                                  an::involute_tooth(pair.gear(2), ai.bore_radius2),
-                                  {pm.gear1.youngs_modulus, pm.gear1.poisson_ratio},
-                                  {pm.gear2.youngs_modulus, pm.gear2.poisson_ratio},
-                                  std::min(gi.gear1.face_width, gi.gear2.face_width), an::pair_line(pair), o);
-      const an::MeshModel mm = pc.mesh_model(ai.corner_contact);
-      Table t;
-      t.add_column("pinion torque", "N m");
-      t.add_column("roll angle", "deg");
-      t.add_column("pairs in contact", "-");
-      t.add_column("loaded STE", "um");
-      t.add_column("mesh stiffness", "N/um");
-      for (int j = 1; j <= 3; ++j)
-        t.add_column("load pair " + std::to_string(j), "N"); // in the order of g: A side first
-      for (double T : ri.torques)
-        {
-          const auto cycle = an::mesh_cycle(mm, T / pair.base_radius(1), ai.positions);
-          double kmin = 1e300, kmax = 0, ksum = 0;
-          for (const auto &s : cycle)
-            {
-              std::vector<double> row{T, s.roll_angle * 180 / M_PI, double(s.g.size()), s.deflection * 1e6,
-                                      s.stiffness * 1e-6, 0, 0, 0};
-              for (std::size_t j = 0; j < s.pair_load.size() && j < 3; ++j)
-                row[5 + j] = s.pair_load[j];
-              t.add_row(row);
-              kmin = std::min(kmin, s.stiffness), kmax = std::max(kmax, s.stiffness), ksum += s.stiffness;
-            }
-          out << "T = " << T << " N m: mesh stiffness " << std::setprecision(4) << kmin * 1e-6 << " .. "
-              << kmax * 1e-6 << " N/um (mean " << ksum / cycle.size() * 1e-6 << ")\n";
-        }
-      t.write_csv(ctx.output_dir / "mesh_cycle.csv");
+      // Mesh cycle: stiffness, loaded STE and load per pair over one pitch (cycle_table.h).
+      an::CycleInput ci{an::involute_tooth(pair.gear(1), ai.bore_radius1),
+                        an::involute_tooth(pair.gear(2), ai.bore_radius2),
+                        {pm.gear1.youngs_modulus, pm.gear1.poisson_ratio},
+                        {pm.gear2.youngs_modulus, pm.gear2.poisson_ratio},
+                        std::min(gi.gear1.face_width, gi.gear2.face_width),
+                        an::pair_line(pair),
+                        ai.options,
+                        ai.corner_contact};
+      ci.options.plane = pm.plane_strain ? an::PlaneCondition::plane_strain : an::PlaneCondition::plane_stress;
+      const an::CycleTable ct = an::mesh_cycle_table(ci, ai.law, ri.torques, ai.positions);
+      for (std::size_t i = 0; i < ct.torques.size(); ++i)
+        out << "T = " << ct.torques[i] << " N m: mesh stiffness " << std::setprecision(4) << ct.k_min[i] * 1e-6
+            << " .. " << ct.k_max[i] * 1e-6 << " N/um (mean " << ct.k_mean[i] * 1e-6 << ")\n";
+      out << "mesh cycle (" << (ai.law == an::CycleLaw::seed000_ricker ? "seed000 ricker" : "load sharing")
+          << "): " << ai.positions << " positions x " << ct.torques.size() << " torques in "
+          << std::setprecision(3) << ct.seconds * 1e3 << " ms\n";
+      ct.table.write_csv(ctx.output_dir / "mesh_cycle.csv");
+      out << "ratings (ISO 6336 and AGMA, " << ri.torques.size() << " torques) in " << rating_seconds * 1e3 << " ms\n";
 
       out << std::fixed << std::setprecision(1);
       for (std::size_t i = 0; i < ri.torques.size(); ++i)

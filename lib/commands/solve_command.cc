@@ -4,6 +4,7 @@
 // files of the deformed pair and the PNG plots (scripts/plot_solve.py). `--resume`
 // continues a killed run from its journal.
 #include "base/errors.h"
+#include "base/memory.h"
 #include "commands/command.h"
 #include "contact/parameters.h"
 #include "io/journal.h"
@@ -68,6 +69,18 @@ namespace gearfem::commands
       out << "\n" << post::summary_table(r, pair, in.solve.torques) << "time: contact "
           << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
           << r.seconds.at("output") << " s\n";
+      if (ctx.outcome)
+        {
+          // The cost of the run, for the speed-against-error study (validation/speed_vs_error).
+          std::ostringstream cost;
+          cost << std::setprecision(6) << "{\"dofs\": " << model->n_dofs() << ", \"mesh_seconds\": "
+               << model->mesh_seconds() << ", \"setup_seconds\": " << model->setup_seconds()
+               << ", \"contact_seconds\": " << r.seconds.at("contact") << ", \"post_seconds\": "
+               << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
+               << ", \"positions\": " << r.results.sweep.n_rows() << ", \"peak_memory_mb\": " << peak_memory_mb()
+               << "}";
+          ctx.outcome->record_members.emplace_back("cost", cost.str());
+        }
       if (in.solve.error_estimate)
         {
           post::ErrorEstimateOptions eo;

@@ -3,6 +3,7 @@
 // stiffness of the 62/62 case, the Weber/Cornell model against ISO 6336-1.
 #include "analytical/agma.h"
 #include "analytical/calibration.h"
+#include "analytical/cycle_table.h"
 #include "analytical/from_geometry.h"
 #include "analytical/iso6336.h"
 #include "analytical/mesh_cycle.h"
@@ -456,4 +457,46 @@ TEST(MeshCycle, CornerContactInTheLoadGivenSolver)
               single[1], single[2]);
   EXPECT_GT(single[0], single[1]);
   EXPECT_GT(single[1], single[2]);
+}
+
+TEST(GeneratedGeometry, MeshCycleTableBothLaws)
+{
+  // gearfem rate's mesh_cycle.csv (cycle_table.h) on the seed 000 Table 1 pair. The
+  // load-sharing rows must equal mesh_cycle() itself; the seed 000 Ricker rows must invert
+  // the law (Seed000SemiAnalytical::load at the tabulated STE gives F back: the inverse
+  // function), carry F in their pair loads (equilibrium), and stay within the thesis' 15 %
+  // of the full model's mean stiffness.
+  auto g = [](int z) {
+    geometry::GearParameters p = gear(z, 3e-3, 0.0, 30e-3);
+    p.thickness_allowance = 0.01 * pi * 3e-3;
+    return geometry::ToothProfile::generate(p);
+  };
+  const geometry::GearPair gp(g(32), g(60), {});
+  CycleInput in{involute_tooth(gp.gear(1)), involute_tooth(gp.gear(2)), {200e9, 0.3}, {200e9, 0.3}, 30e-3,
+                pair_line(gp), {}, false};
+  in.options.plane = PlaneCondition::plane_strain;
+  const std::vector<double> torques{40.0, 120.0};
+  const CycleTable ls = mesh_cycle_table(in, CycleLaw::load_sharing, torques, 40);
+  const CycleTable rk = mesh_cycle_table(in, CycleLaw::seed000_ricker, torques, 40);
+  ASSERT_EQ(ls.table.n_rows(), 80u);
+  ASSERT_EQ(rk.table.n_rows(), 80u);
+  const PairCompliance pc(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, in.options);
+  const auto direct = mesh_cycle(pc.mesh_model(false), 120.0 / in.line.rb1, 40);
+  const auto ste_ls = ls.table.column("loaded STE"), ste_rk = rk.table.column("loaded STE");
+  const auto roll = rk.table.column("roll angle");
+  for (int i = 0; i < 40; ++i)
+    EXPECT_NEAR(ste_ls[40 + i], direct[i].deflection * 1e6, 1e-12);
+  double km = 0;
+  for (const auto &s : direct)
+    km += s.stiffness / direct.size();
+  const Seed000SemiAnalytical sa(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, km, in.options);
+  const double F = 120.0 / in.line.rb1;
+  for (int i = 0; i < 40; ++i)
+    {
+      EXPECT_NEAR(sa.load(roll[40 + i] * deg, ste_rk[40 + i] * 1e-6) / F, 1.0, 1e-9);
+      const auto &row = rk.table.row(40 + i);
+      EXPECT_NEAR((row[5] + row[6] + row[7]) / F, 1.0, 1e-9);
+    }
+  EXPECT_NEAR(rk.k_mean[1] / ls.k_mean[1], 1.0, 0.15);
+  EXPECT_GT(rk.seconds, 0.0);
 }
