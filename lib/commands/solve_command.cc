@@ -43,7 +43,8 @@ namespace gearfem::commands
       if (ctx.validate_only)
         return;
 
-      auto model = in.model();
+      auto model             = in.model();
+      const double cpu_setup = process_cpu_seconds(); // parsing, meshing, assembly, factorisation
       out << "model: " << model->n_dofs() << " DoFs (" << model->body(1).n_dofs() << " + "
           << model->body(2).n_dofs() << "), " << model->body(1).triangulation().n_active_cells() << " + "
           << model->body(2).triangulation().n_active_cells() << " cells, mesh " << std::setprecision(3)
@@ -78,6 +79,8 @@ namespace gearfem::commands
                << ", \"contact_seconds\": " << r.seconds.at("contact") << ", \"post_seconds\": "
                << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
                << ", \"positions\": " << r.results.sweep.n_rows() << ", \"peak_memory_mb\": " << peak_memory_mb()
+               << ", \"cpu_setup_seconds\": " << cpu_setup << ", \"cpu_sweep_seconds\": "
+               << process_cpu_seconds() - cpu_setup
                << "}";
           ctx.outcome->record_members.emplace_back("cost", cost.str());
         }

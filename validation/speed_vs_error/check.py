@@ -21,13 +21,15 @@ def main():
     c = Checks("speed_vs_error", out)
     for key, pair in PAIRS.items():
         t = PAIRS[key]["title"]
-        expected = list(fe_candidates(pair)) + list(ANALYTICAL)
+        expected = list(fe_candidates(pair)) + list(ANALYTICAL)  # ref_check included
         have = data.get(key, {})
         c.abs(f"{t}: rungs that ran", len([n for n in expected if n in have]), len(expected), 0,
               "every rung of pairs.py (study.py run)")
         if key not in err:
             continue
-        ee = have["ref"][3].get("error_estimate")
+        ee = have["ref_check"][3].get("error_estimate") if "ref_check" in have else None
+        c.true(f"{t}: reference error estimate ran", ee is not None, str(ee is not None), "True",
+               "ref_check: Solve/Error estimate on the reference mesh")
         if ee:
             # Richardson estimate of the reference's own discretisation error (h -> h/2).
             worst = {}
