@@ -481,6 +481,7 @@ namespace gearfem::mesh
         gmsh_failure("returned inconsistent node tags", "");
       }
     snap_boundary_vertices(out);
+    untangle_inverted_cells(out);
     out.mesh_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 
@@ -526,6 +527,80 @@ namespace gearfem::mesh
         r.max_edge         = std::max(r.max_edge, lmax);
       }
     return r;
+  }
+
+  namespace
+  {
+    /// The corners of a cell counter-clockwise (gmsh/deal.II lexicographic order 0, 1, 3, 2).
+    std::array<unsigned int, 4> ccw(const std::array<unsigned int, 4> &c) { return {c[0], c[1], c[3], c[2]}; }
+
+    bool is_inverted(const MeshData &m, const std::array<unsigned int, 4> &c)
+    {
+      const auto q = ccw(c);
+      for (int i = 0; i < 4; ++i)
+        {
+          const Vec2 a = m.vertices[q[(i + 1) % 4]] - m.vertices[q[i]], b = m.vertices[q[(i + 3) % 4]] - m.vertices[q[i]];
+          if (a.x() * b.y() - a.y() * b.x() <= 0)
+            return true;
+        }
+      return false;
+    }
+  } // namespace
+
+  int untangle_inverted_cells(MeshData &mesh, int sweeps)
+  {
+    auto inverted = [&] {
+      std::vector<std::size_t> bad;
+      for (std::size_t k = 0; k < mesh.cells.size(); ++k)
+        if (is_inverted(mesh, mesh.cells[k]))
+          bad.push_back(k);
+      return bad;
+    };
+    std::vector<std::size_t> bad = inverted();
+    if (bad.empty())
+      return 0;
+    std::vector<char> fixed(mesh.vertices.size(), 0);
+    for (const auto &e : mesh.boundary_edges)
+      fixed[e.v0] = fixed[e.v1] = 1;
+    std::vector<std::vector<unsigned int>> nb(mesh.vertices.size()), cells_of(mesh.vertices.size());
+    for (std::size_t k = 0; k < mesh.cells.size(); ++k)
+      {
+        const auto q = ccw(mesh.cells[k]);
+        for (int i = 0; i < 4; ++i)
+          {
+            nb[q[i]].push_back(q[(i + 1) % 4]), nb[q[i]].push_back(q[(i + 3) % 4]);
+            cells_of[q[i]].push_back(static_cast<unsigned int>(k));
+          }
+      }
+    // The free vertices to smooth: those of the inverted cells, grown by one ring of cells
+    // every 10 sweeps that did not untangle them.
+    std::vector<char> active(mesh.vertices.size(), 0);
+    for (const std::size_t k : bad)
+      for (unsigned v : mesh.cells[k])
+        active[v] = !fixed[v];
+    for (int s = 0; s < sweeps && !bad.empty(); ++s)
+      {
+        if (s > 0 && s % 10 == 0)
+          {
+            std::vector<char> grown = active;
+            for (std::size_t v = 0; v < active.size(); ++v)
+              if (active[v])
+                for (unsigned k : cells_of[v])
+                  for (unsigned w : mesh.cells[k])
+                    grown[w] = !fixed[w];
+            active.swap(grown);
+          }
+        for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+          if (active[v] && !nb[v].empty())
+            {
+              Vec2 sum(0, 0);
+              for (unsigned w : nb[v])
+                sum += mesh.vertices[w];
+              mesh.vertices[v] = sum / double(nb[v].size());
+            }
+        bad = inverted();
+      }
+    return static_cast<int>(bad.size());
   }
 
   Domain annulus_domain(double r_inner, double r_outer, double h)

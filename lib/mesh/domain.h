@@ -145,4 +145,11 @@ namespace gearfem::mesh
     std::size_t n_inverted = 0;           ///< cells with a non-positive corner Jacobian
   };
   QualityReport quality(const MeshData &mesh);
+
+  /// Untangle the cells that the snap of the boundary vertices onto the exact curves (or
+  /// gmsh itself) left inverted: Laplacian smoothing of the interior vertices of inverted
+  /// cells, growing to their neighbours when that is not enough, at most `sweeps` times.
+  /// Boundary vertices never move (they stay on the exact curves); a mesh with no inverted
+  /// cell is not touched. Returns the number of inverted cells left.
+  int untangle_inverted_cells(MeshData &mesh, int sweeps = 50);
 } // namespace gearfem::mesh

@@ -126,3 +126,35 @@ TEST(MeshDomain, BadInput)
   d.growth = 1.0;
   EXPECT_THROW(mesh::mesh_domain(d), InputError);
 }
+
+TEST(MeshDomain, UntangleInvertedCells)
+{
+  // A 3 x 3 grid of unit quads on [0, 3]^2 (lexicographic corners 0, 1, 3, 2 as gmsh gives
+  // them) with one interior vertex pushed across its neighbours, as a snap of a coarse
+  // boundary vertex onto a curve can do: Laplacian smoothing of the free vertices must
+  // untangle it (the closed form: a regular grid is its own Laplacian fixed point, so the
+  // vertex returns to (1, 1)) and must not move a boundary vertex.
+  mesh::MeshData m;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i)
+      m.vertices.emplace_back(i, j);
+  auto id = [](int i, int j) { return static_cast<unsigned>(j * 4 + i); };
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      m.cells.push_back({id(i, j), id(i + 1, j), id(i, j + 1), id(i + 1, j + 1)});
+  for (int i = 0; i < 3; ++i)
+    for (auto [a, b] : {std::pair{id(i, 0), id(i + 1, 0)}, std::pair{id(i, 3), id(i + 1, 3)},
+                        std::pair{id(0, i), id(0, i + 1)}, std::pair{id(3, i), id(3, i + 1)}})
+      m.boundary_edges.push_back({a, b, 1});
+  const auto before = m.vertices;
+  EXPECT_EQ(mesh::untangle_inverted_cells(m), 0); // nothing inverted: untouched
+  EXPECT_EQ(m.vertices, before);
+  m.vertices[id(1, 1)] = mesh::Vec2(2.4, 2.3); // beyond the vertices (2, 1), (1, 2) and (2, 2)
+  ASSERT_GT(mesh::quality(m).n_inverted, 0);
+  EXPECT_EQ(mesh::untangle_inverted_cells(m), 0);
+  EXPECT_EQ(mesh::quality(m).n_inverted, 0);
+  for (int k = 0; k < 16; ++k)
+    if (k != int(id(1, 1)) && k != int(id(2, 1)) && k != int(id(1, 2)) && k != int(id(2, 2)))
+      EXPECT_EQ(m.vertices[k], before[k]) << "boundary vertex " << k << " moved";
+  EXPECT_LT((m.vertices[id(1, 1)] - mesh::Vec2(1, 1)).norm(), 0.05);
+}
