@@ -137,10 +137,10 @@ namespace gearfem::analytical::gearbox
     if (internal)
       g.iso.Z_D = 1.0;
     // ISO 6336-3: outer point of single contact, the pinion's HPSTC (C4) and the gear's point
-    // opposite the LPSTC (C6 - C2).
-    g.F1_iso = iso_root(z1, x1, m, g.alpha, std::hypot(l.Rb1, l.C4), f.tool);
+    // opposite the LPSTC (C6 - C2); the line of action is in unit module.
+    g.F1_iso = iso_root(z1, x1, m, g.alpha, m * std::hypot(l.Rb1, l.C4), f.tool);
     if (!internal)
-      g.F2_iso = iso_root(z2, x2, m, g.alpha, std::hypot(l.Rb2, l.C6 - l.C2), f.tool);
+      g.F2_iso = iso_root(z2, x2, m, g.alpha, m * std::hypot(l.Rb2, l.C6 - l.C2), f.tool);
     const double bh = std::max(3.0, g.b / (ha + hf)), NF = bh * bh / (1 + bh + bh * bh);
     g.K_Fbeta = std::pow(f.K_Hbeta, NF);
     return g;

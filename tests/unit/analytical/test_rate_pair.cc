@@ -172,9 +172,9 @@ TEST(Rate, GearboxIsoRootStressAgainstRate)
           std::printf("stage %d member %d: Y_F %.4f (rate %.4f), Y_S %.4f (%.4f), sigma_F %.2f (%.2f) MPa\n", stage, i,
                       F.Y_F, r.row("ISO 6336", "Y_F" + k).values[0], F.Y_S, r.row("ISO 6336", "Y_S" + k).values[0],
                       sF / 1e6, r.row("ISO 6336", "sigma_F" + k).values[0]);
-          EXPECT_NEAR(F.Y_F / r.row("ISO 6336", "Y_F" + k).values[0], 1.0, 0.015);
-          EXPECT_NEAR(F.Y_S / r.row("ISO 6336", "Y_S" + k).values[0], 1.0, 0.01);
-          EXPECT_NEAR(sF / 1e6 / r.row("ISO 6336", "sigma_F" + k).values[0], 1.0, 0.015);
+          EXPECT_NEAR(F.Y_F / r.row("ISO 6336", "Y_F" + k).values[0], 1.0, 0.005);
+          EXPECT_NEAR(F.Y_S / r.row("ISO 6336", "Y_S" + k).values[0], 1.0, 0.005);
+          EXPECT_NEAR(sF / 1e6 / r.row("ISO 6336", "sigma_F" + k).values[0], 1.0, 0.005);
         }
       // The ring (internal) is not rated in bending.
       EXPECT_EQ(analytical::gearbox::mesh_stress(st.meshes[1], Ft, f).sigma_F2_iso, 0.0);
