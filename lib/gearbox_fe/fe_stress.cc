@@ -178,6 +178,12 @@ namespace gearfem::gearbox_fe
         r.sigma_F1.push_back(max_of(sw.column("root stress pinion"), sT, T, nullptr) * 1e6);
         r.sigma_F2.push_back(max_of(sw.column("root stress gear"), sT, T, nullptr) * 1e6);
       }
+    // A torque without a flank-to-flank pair or a fillet stress would enter the damage sum
+    // as "no damage": refuse it like a solver failure.
+    for (std::size_t i = 0; i < r.pinion_torques.size() && r.failure.empty(); ++i)
+      if (!(r.sigma_H[i] > 0 && r.sigma_F1[i] > 0 && r.sigma_F2[i] > 0))
+        r.failure = "no flank-to-flank contact or no root stress over the mesh cycle at the pinion torque " +
+                    to_string_g(r.pinion_torques[i]) + " N m (refine FE stresses/h_contact or add Positions)";
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }

@@ -3,9 +3,9 @@
 #  - sec. 3: `gearfem gearbox` on the thesis' tabulated stresses (damage chain) and on
 #    gearfem's own AGMA stresses;
 #  - sec. 2: the same gearbox with ISO 6336 stresses (Stress source = ISO) and with FE
-#    stresses on the stage-2 sun-planet mesh (inputs/seed001_gearbox_fe.prm: 3-tooth
-#    sectors, 12 positions, 3 torques), plus the FE mesh with halved element sizes at the
-#    top torque (convergence);
+#    stresses on the sun-planet meshes of both stages (inputs/seed001_gearbox_fe.prm:
+#    3-tooth sectors, 12 positions, 3 torques), plus the stage-2 FE mesh with halved element
+#    sizes at the top torque (convergence);
 # prints the figures recorded in validation/RESULTS.md and checks them (check.py: PASS/FAIL).
 #   validation/seed001_gearbox/run.sh [gearfem] [output folder]
 set -euo pipefail
@@ -19,6 +19,7 @@ mkdir -p "$out/inputs"
 sed -e 's/^\(  set Stress source *=\).*/\1 ISO/' "$root/inputs/seed001_gearbox.prm" > "$out/inputs/seed001_gearbox_iso.prm"
 sed -e 's/^\(  set h_contact *=\).*/\1 0.058333/' -e 's/^\(  set h_fillet *=\).*/\1 0.125/' \
     -e 's/^\(  set h_body *=\).*/\1 1.75/' -e 's/^\(  set Torque points *=\).*/\1 1/' \
+    -e 's/^\(  set Stages *=\).*/\1 2/' \
     "$root/inputs/seed001_gearbox_fe.prm" > "$out/inputs/seed001_gearbox_fe_fine.prm"
 for case in seed001_gearbox_thesis_stresses seed001_gearbox seed001_gearbox_iso seed001_gearbox_fe seed001_gearbox_fe_fine; do
   echo "== $case"
