@@ -27,6 +27,20 @@ namespace gearfem::analytical::gearbox
       mB = t_B / h_t;
       KB = agma::K_B(mB);
     }
+    /// ISO 6336-3 method B factors of an external member loaded at radius r_e: the critical
+    /// section from the rack-fillet closed form (eqs. 25-33), the involute's half tooth angle
+    /// at the base circle psi_b = (pi/2 + 2 x tan a)/z + inv a.
+    iso6336::RootFactors iso_root(int z, double x, double m, double alpha, double r_e, const agma::Tool &tool)
+    {
+      const iso6336::RackFilletClosedForm c =
+        iso6336::rack_fillet_closed_form(z, m, alpha, x, tool.h_ao, tool.rho_ao);
+      iso6336::CriticalSection cs;
+      cs.s_Fn = c.s_Fn, cs.y = c.y, cs.rho_F = c.rho_F;
+      const double inv = std::tan(alpha) - alpha;
+      const iso6336::InvoluteFlank fl{0.5 * m * z * std::cos(alpha), (pi / 2 + 2 * x * std::tan(alpha)) / z + inv};
+      return iso6336::root_factors(cs, fl, r_e, m, alpha);
+    }
+
     /// The input entry prefix of a member: "Sun", "Planet" or "Ring" (parallel: gear 1 is
     /// entered as the sun, gear 2 as the planet).
     std::string member_entry(const std::string &member)
@@ -122,6 +136,13 @@ namespace gearfem::analytical::gearbox
     g.iso = iso6336::contact_stress(ci);
     if (internal)
       g.iso.Z_D = 1.0;
+    // ISO 6336-3: outer point of single contact, the pinion's HPSTC (C4) and the gear's point
+    // opposite the LPSTC (C6 - C2); the line of action is in unit module.
+    g.F1_iso = iso_root(z1, x1, m, g.alpha, m * std::hypot(l.Rb1, l.C4), f.tool);
+    if (!internal)
+      g.F2_iso = iso_root(z2, x2, m, g.alpha, m * std::hypot(l.Rb2, l.C6 - l.C2), f.tool);
+    const double bh = std::max(3.0, g.b / (ha + hf)), NF = bh * bh / (1 + bh + bh * bh);
+    g.K_Fbeta = std::pow(f.K_Hbeta, NF);
     return g;
   }
 
@@ -136,6 +157,9 @@ namespace gearfem::analytical::gearbox
     const double Ft_iso = Ft * g.r_w1 / (0.5 * g.module * g.z1);
     const double H0 = g.iso.sigma_H0 * std::sqrt(Ft_iso * f.K_A * f.K_v_iso * f.K_Hbeta);
     r.sigma_H1_iso = g.iso.Z_B * H0, r.sigma_H2_iso = g.iso.Z_D * H0;
+    const double F0 = Ft_iso / (g.b * g.module) * f.K_A * f.K_v_iso * g.K_Fbeta;
+    r.sigma_F1_iso = F0 * g.F1_iso.Y_F * g.F1_iso.Y_S;
+    r.sigma_F2_iso = F0 * g.F2_iso.Y_F * g.F2_iso.Y_S;
     return r;
   }
 

@@ -88,6 +88,12 @@ namespace gearfem::analytical::gearbox
     /// ISO 6336-2 factors at F_t = 1 N (internal: z2, d_a2, d_b2 negative, as the
     /// standard's sign convention; Z_D = 1 for the internal gear).
     iso6336::ContactFactors iso;
+    /// ISO 6336-3 method B form and stress-correction factors (load at the outer point of
+    /// single contact, critical section from the standard's rack-fillet closed form, eqs.
+    /// 25-33, with the tool of AgmaFactors) of pinion and (external) gear; the ring is not
+    /// rated in bending (Y_F = 0), as in AGMA.
+    iso6336::RootFactors F1_iso, F2_iso;
+    double K_Fbeta = 1;             ///< K_Hbeta^N_F (ISO 6336-1 eq. 41)
   };
   /// Geometry, line of action and AGMA factors of a mesh. hold1, hold2: holding diameters
   /// for K_B [m] (bore, or the ring's outside diameter); 0: K_B = 1.
@@ -103,6 +109,9 @@ namespace gearfem::analytical::gearbox
     /// ISO 6336-2 contact stress of pinion (Z_B) and gear (Z_D), for comparison; the
     /// damage sum uses the AGMA sigma_H as the thesis does. F_t,ISO = F_t r_w1/r_1.
     double sigma_H1_iso = 0, sigma_H2_iso = 0;
+    /// ISO 6336-3 method B root stress of pinion and gear (0: ring), F_t,ISO/(b m_n) Y_F Y_S
+    /// Y_beta K_A K_v K_Fbeta K_Falpha with Y_beta = K_Falpha = 1 (spur, K_Halpha = 1).
+    double sigma_F1_iso = 0, sigma_F2_iso = 0;
   };
   MeshStress mesh_stress(const MeshGeometry &g, double Ft, const AgmaFactors &f);
 

@@ -2,6 +2,7 @@
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gearfem::analytical::gearbox
@@ -20,6 +21,19 @@ namespace gearfem::analytical::gearbox
               r[k][j].push_back(mesh_stress(st.meshes[j], Ft, f));
           }
       }
+    return r;
+  }
+
+  StressTable iso_stresses(const StressTable &agma)
+  {
+    StressTable r = agma;
+    for (auto &stage : r)
+      for (auto &mesh : stage)
+        for (MeshStress &m : mesh)
+          {
+            m.sigma_H = std::max(m.sigma_H1_iso, m.sigma_H2_iso);
+            m.sigma_F1 = m.sigma_F1_iso, m.sigma_F2 = m.sigma_F2_iso;
+          }
     return r;
   }
 
@@ -43,7 +57,8 @@ namespace gearfem::analytical::gearbox
             {
               const double q = M / M_ref, h = std::sqrt(q);
               const MeshStress &a = at_ref[k][j];
-              r[k][j].push_back({a.sigma_H * h, a.sigma_F1 * q, a.sigma_F2 * q, a.sigma_H1_iso * h, a.sigma_H2_iso * h});
+              r[k][j].push_back({a.sigma_H * h, a.sigma_F1 * q, a.sigma_F2 * q, a.sigma_H1_iso * h, a.sigma_H2_iso * h,
+                                 a.sigma_F1_iso * q, a.sigma_F2_iso * q});
             }
       }
     return r;
@@ -56,13 +71,14 @@ namespace gearfem::analytical::gearbox
       const fatigue::Spectrum &s;
       double years_per_spectrum;
       std::vector<MemberLife> &out;
+      std::size_t stage_index = 0;
       /// One entry from one or more (stress series, cycles per input revolution) pairs
       /// whose damages add up.
       void add(const std::string &stage, const std::string &member, const std::string &mode,
                const std::string &detail, const fatigue::SNCurve &c,
                const std::vector<std::pair<std::vector<double>, double>> &loads)
       {
-        MemberLife m{stage, member, mode, detail, 0.0, {}, fatigue::infinite_life};
+        MemberLife m{stage, member, mode, detail, 0.0, {}, fatigue::infinite_life, {}, {}, stage_index};
         m.damage.per_bin.assign(s.torques.size(), 0.0);
         for (const auto &[sigma, per_rev] : loads)
           {
@@ -70,6 +86,8 @@ namespace gearfem::analytical::gearbox
             for (double rev : s.revolutions)
               n.push_back(rev * per_rev);
             const fatigue::Damage d = fatigue::miner(c, sigma, n);
+            m.stress.push_back(sigma);
+            m.cycles.push_back(n);
             m.damage.D += d.D;
             for (std::size_t i = 0; i < d.per_bin.size(); ++i)
               m.damage.per_bin[i] += d.per_bin[i];
@@ -107,6 +125,7 @@ namespace gearfem::analytical::gearbox
       {
         const Stage &st = t.stages[k];
         const StageMaterial &mat = materials[k];
+        b.stage_index = k;
         const double r = t.input_revolutions(k);
         const std::string name = st.in.name;
         const MeshGeometry &g0 = st.meshes[0];
@@ -224,15 +243,38 @@ namespace gearfem::analytical::gearbox
   void use_reference_stresses(GearboxResult &r, const GearboxInput &in,
                               const std::vector<std::vector<MeshStress>> &at_ref, double M_ref)
   {
-    StressTable s = scaled_stresses(r.train, in.spectrum, at_ref, M_ref);
+    use_stress_table(r, in, scaled_stresses(r.train, in.spectrum, at_ref, M_ref));
+  }
+
+  void use_stress_table(GearboxResult &r, const GearboxInput &in, StressTable s)
+  {
+    const std::string what = "stress table of the damage sum";
+    if (s.size() != r.stress.size())
+      throw InputError(what, std::to_string(s.size()) + " stages", std::to_string(r.stress.size()) + " stages");
     for (std::size_t k = 0; k < s.size(); ++k)
-      for (std::size_t j = 0; j < s[k].size(); ++j)
-        for (std::size_t b = 0; b < s[k][j].size(); ++b)
+      {
+        if (s[k].size() != r.stress[k].size())
+          throw InputError(what + " of stage " + std::to_string(k + 1), std::to_string(s[k].size()) + " meshes",
+                           std::to_string(r.stress[k].size()) + " meshes");
+        for (std::size_t j = 0; j < s[k].size(); ++j)
           {
-            s[k][j][b].sigma_H1_iso = r.stress[k][j][b].sigma_H1_iso;
-            s[k][j][b].sigma_H2_iso = r.stress[k][j][b].sigma_H2_iso;
+            if (s[k][j].size() != r.stress[k][j].size())
+              throw InputError(what + " of stage " + std::to_string(k + 1), std::to_string(s[k][j].size()) + " bins",
+                               std::to_string(r.stress[k][j].size()) + " bins");
+            for (std::size_t b = 0; b < s[k][j].size(); ++b)
+              {
+                MeshStress &m = s[k][j][b];
+                for (double v : {m.sigma_H, m.sigma_F1, m.sigma_F2})
+                  if (!(std::isfinite(v) && v >= 0.0))
+                    throw InputError(what + " of stage " + std::to_string(k + 1) + ", bin " + std::to_string(b + 1),
+                                     to_string_g(v / 1e6) + " MPa", "finite and >= 0 MPa");
+                const MeshStress &o = r.stress[k][j][b];
+                m.sigma_H1_iso = o.sigma_H1_iso, m.sigma_H2_iso = o.sigma_H2_iso;
+                m.sigma_F1_iso = o.sigma_F1_iso, m.sigma_F2_iso = o.sigma_F2_iso;
+              }
           }
-    r.stress = s;
+      }
+    r.stress = std::move(s);
     r.lives = member_lives(r.train, in.spectrum, r.stress, in.materials);
     r.first_failure = first_failure(r.lives);
   }

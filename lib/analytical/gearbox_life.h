@@ -26,6 +26,11 @@ namespace gearfem::analytical::gearbox
   /// AGMA 2101-D04 stresses of every mesh at every spectrum torque (F_t from 7.2-3).
   StressTable agma_stresses(const Train &t, const fatigue::Spectrum &s, const AgmaFactors &f);
 
+  /// The ISO columns of a stress table as the damage-sum stresses: sigma_H = max(sigma_H1,
+  /// sigma_H2) of ISO 6336-2 (Z_B/Z_D; the larger rates both members of the mesh, as the
+  /// AGMA sigma_H does), sigma_F1/F2 = ISO 6336-3 method B. The ISO columns are kept.
+  StressTable iso_stresses(const StressTable &agma);
+
   /// Stresses known at one gearbox-input torque M_ref [N m] (e.g. the thesis' tables at
   /// 45 000 N m), scaled to every bin: sigma_H ~ sqrt(M/M_ref), sigma_F ~ M/M_ref (seed 001
   /// tables 9.4-1..3 follow these laws exactly). at_ref[stage][mesh].
@@ -40,6 +45,10 @@ namespace gearfem::analytical::gearbox
     double cycles_per_revolution = 0; ///< load cycles per gearbox-input revolution (per mesh)
     fatigue::Damage damage;
     double life_years = fatigue::infinite_life;
+    /// Per load (mesh or flank whose damages add up), per bin: the stress [Pa] and the load
+    /// cycles per spectrum (for the S-N plot, gearbox_sn.csv).
+    std::vector<std::vector<double>> stress, cycles;
+    std::size_t stage_index = 0;
   };
 
   /// Damage of every member and mode (seed 001 table 8.2-1 cycles, eqs. 8.4-1..4).
@@ -90,4 +99,10 @@ namespace gearfem::analytical::gearbox
   /// keep the computed values.
   void use_reference_stresses(GearboxResult &r, const GearboxInput &in,
                               const std::vector<std::vector<MeshStress>> &at_ref, double M_ref);
+
+  /// Replace the stresses of the damage sum by `s` (e.g. FE stresses per mesh and bin, from
+  /// lib/gearbox_fe) and redo the lives and the first failure; the ISO columns and the
+  /// scuffing results keep the computed values. Throws InputError for a table whose shape
+  /// differs from the train and spectrum, or a stress that is not finite and >= 0.
+  void use_stress_table(GearboxResult &r, const GearboxInput &in, StressTable s);
 } // namespace gearfem::analytical::gearbox

@@ -158,9 +158,13 @@ namespace gearfem::analytical::gearbox
     prm.enter_subsection("Gearbox");
     prm.declare_entry("Input speed", "61", Double(0), "Speed of the gearbox input shaft. Units: rpm.");
     prm.declare_entry("Number of stages", "2", Integer(0), "Stages used, from `Stage 1`. Units: none. Allowed: 1-4.");
-    prm.declare_entry("Stress source", "AGMA", Selection("AGMA|table"),
-                      "AGMA: AGMA 2101-D04/908-B89 from the geometry; table: the stresses given per stage "
-                      "at the reference torque, sigma_H scaled with sqrt(M), sigma_F with M.");
+    prm.declare_entry("Stress source", "AGMA", Selection("AGMA|ISO|table|FE"),
+                      "AGMA: AGMA 2101-D04/908-B89 from the geometry; ISO: ISO 6336-2 (the larger of "
+                      "sigma_H1, sigma_H2 of the mesh) and ISO 6336-3 method B (sigma_F) from the geometry; table: the stresses given per stage "
+                      "at the reference torque, sigma_H scaled with sqrt(M), sigma_F with M; FE: the external "
+                      "meshes solved by `gearfem solve` sector models (section `FE stresses`), sigma_H as "
+                      "Hertz from the FE load share and sigma_F as the fillet sigma_1, maxima over the mesh "
+                      "cycle; the internal meshes keep AGMA.");
     prm.declare_entry("Reference torque", "45000", Double(0), "Input torque of the table stresses. Units: N m.");
     prm.leave_subsection();
     for (int k = 1; k <= max_stages; ++k)
@@ -199,7 +203,11 @@ namespace gearfem::analytical::gearbox
     prm.enter_subsection("Gearbox");
     st.input.input_speed = params::get_double(prm, "Input speed");
     const int n = params::get_integer(prm, "Number of stages");
-    st.source = prm.get("Stress source") == "table" ? StressSource::table : StressSource::agma;
+    const std::string source = prm.get("Stress source");
+    st.source = source == "table" ? StressSource::table :
+                source == "FE"    ? StressSource::fe :
+                source == "ISO"   ? StressSource::iso :
+                                    StressSource::agma;
     st.reference_torque = params::get_double(prm, "Reference torque");
     prm.leave_subsection();
     require_range("Gearbox/Number of stages", n, 1, max_stages);

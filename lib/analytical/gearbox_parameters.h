@@ -19,7 +19,10 @@ namespace gearfem::analytical::gearbox
   enum class StressSource
   {
     agma, ///< AGMA 2101-D04 / 908-B89 from the geometry (gearbox.h)
-    table ///< per-mesh stresses given at a reference torque, scaled (scaled_stresses)
+    iso,   ///< ISO 6336-2/-3 from the geometry (iso_stresses)
+    table, ///< per-mesh stresses given at a reference torque, scaled (scaled_stresses)
+    fe     ///< the external meshes from FE sweeps (lib/gearbox_fe, a layer above post), the
+           ///< internal meshes AGMA; the table of stresses is given to use_stress_table
   };
   struct GearboxStudy
   {

@@ -75,13 +75,26 @@ namespace gearfem::analytical::gearbox
         {"application factor", "K_A", "6336-1 (input)", "-", f.K_A},
         {"dynamic factor", "K_v,ISO", "6336-1 (input)", "-", f.K_v_iso},
         {"face load factor", "K_Hbeta", "6336-1 (input); K_Halpha = 1", "-", f.K_Hbeta},
+        {"face load factor (root) K_Hbeta^N_F", "K_Fbeta", "6336-1 eq. 41; K_Falpha = 1, Y_beta = 1", "-", g.K_Fbeta},
       };
+      const iso6336::RootFactors *F[2] = {&g.F1_iso, &g.F2_iso};
+      for (int i = 0; i < (g.internal ? 1 : 2); ++i)
+        {
+          const std::string who = i == 0 ? p : q, s = std::to_string(i + 1);
+          const std::string fillet = "6336-3 eqs. 25-33 (rack-generated fillet, closed form)";
+          r.push_back({"critical section chord (30 deg tangent), " + who, "s_Fn" + s, fillet, "mm", F[i]->s_Fn * 1e3});
+          r.push_back({"fillet radius at the critical section, " + who, "rho_F" + s, fillet, "mm", F[i]->rho_F * 1e3});
+          r.push_back({"bending moment arm, outer single contact, " + who, "h_Fe" + s, "6336-3 6.2", "mm", F[i]->h_Fe * 1e3});
+          r.push_back({"load direction angle, " + who, "alpha_Fen" + s, "6336-3 6.2", "deg", F[i]->alpha_Fen * 180 / pi});
+          r.push_back({"form factor, " + who, "Y_F" + s, "6336-3 eq. 24 (method B)", "-", F[i]->Y_F});
+          r.push_back({"stress correction factor, " + who, "Y_S" + s, "6336-3 eq. 43", "-", F[i]->Y_S});
+        }
       return r;
     }
   } // namespace
 
   void write_markdown(const GearboxInput &in, const GearboxResult &r, const std::string &source,
-                      const std::filesystem::path &file, const std::string &title)
+                      const std::filesystem::path &file, const std::string &title, const std::string &appendix)
   {
     const std::string fs = file.string();
     std::ostringstream s;
@@ -123,8 +136,8 @@ namespace gearfem::analytical::gearbox
             s << "| " << row.quantity << " | " << row.symbol << " | " << row.clause << " | " << row.unit << " | "
               << num(row.value, fs, row.symbol) << " |\n";
           s << "\n| M_in (N m) | sigma_H (MPa) | sigma_F1 (MPa) | sigma_F2 (MPa) | ISO sigma_H1 / sigma_H2 (MPa) | "
-               "theta_fl,max (K) | theta_B,max (C) | h_c,min (um) | lambda_min | P_scuffing | risk |\n"
-               "|---|---|---|---|---|---|---|---|---|---|---|\n";
+               "ISO sigma_F1 / sigma_F2 (MPa) | theta_fl,max (K) | theta_B,max (C) | h_c,min (um) | lambda_min | "
+               "P_scuffing | risk |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
           for (std::size_t b = 0; b < in.spectrum.torques.size(); ++b)
             {
               const MeshStress &m = r.stress[k][j][b];
@@ -132,11 +145,14 @@ namespace gearfem::analytical::gearbox
               s << "| " << num(in.spectrum.torques[b], fs, "torque") << " | " << num(m.sigma_H / 1e6, fs, "sigma_H") << " | "
                 << num(m.sigma_F1 / 1e6, fs, "sigma_F1") << " | " << num(m.sigma_F2 / 1e6, fs, "sigma_F2") << " | "
                 << num(m.sigma_H1_iso / 1e6, fs, "ISO sigma_H1") << " / " << num(m.sigma_H2_iso / 1e6, fs, "ISO sigma_H2") << " | "
+                << num(m.sigma_F1_iso / 1e6, fs, "ISO sigma_F1") << " / "
+                << (g.internal ? std::string("-") : num(m.sigma_F2_iso / 1e6, fs, "ISO sigma_F2")) << " | "
                 << num(c.theta_fl_max, fs, "theta_fl") << " | " << num(c.theta_B_max, fs, "theta_B") << " | "
                 << num(c.h_c_min * 1e6, fs, "h_c") << " | " << num(c.lambda_min, fs, "lambda") << " | "
                 << num(c.P, fs, "P", 3) << " | " << c.risk << " |\n";
             }
         }
+    s << appendix;
     s << "\n## Fatigue life (Miner, eqs. 8.4-1..4; spectrum of " << num(in.spectrum.duration_years, fs, "years")
       << " years)\n\n| stage | member | mode | load | cycles per input rev | D | life (spectra) | life (years) |\n"
          "|---|---|---|---|---|---|---|---|\n";
@@ -164,7 +180,7 @@ namespace gearfem::analytical::gearbox
                       f3 = (dir / "scuffing_path.csv").string();
     std::ostringstream a, l, p;
     a << "stage,mesh,input torque [N m],F_t [N],sigma_H [MPa],sigma_F1 [MPa],sigma_F2 [MPa],ISO sigma_H1 [MPa],"
-         "ISO sigma_H2 [MPa],theta_fl_max [K],theta_B_max [C],h_c_min [um],lambda_min [-],P_scuffing [-]\n";
+         "ISO sigma_H2 [MPa],theta_fl_max [K],theta_B_max [C],h_c_min [um],lambda_min [-],P_scuffing [-],ISO sigma_F1 [MPa],ISO sigma_F2 [MPa]\n";
     // The worst scuffing bin (highest theta_B) for the path file.
     std::size_t wk = 0, wj = 0, wb = 0;
     for (std::size_t k = 0; k < r.train.stages.size(); ++k)
@@ -183,7 +199,9 @@ namespace gearfem::analytical::gearbox
                 << num(m.sigma_F2 / 1e6, f1, "sigma_F2", 10) << "," << num(m.sigma_H1_iso / 1e6, f1, "ISO sigma_H1", 10) << ","
                 << num(m.sigma_H2_iso / 1e6, f1, "ISO sigma_H2", 10) << "," << num(c.theta_fl_max, f1, "theta_fl") << ","
                 << num(c.theta_B_max, f1, "theta_B") << "," << num(c.h_c_min * 1e6, f1, "h_c") << ","
-                << num(c.lambda_min, f1, "lambda") << "," << num(c.P, f1, "P") << "\n";
+                << num(c.lambda_min, f1, "lambda") << "," << num(c.P, f1, "P") << ","
+                << num(m.sigma_F1_iso / 1e6, f1, "ISO sigma_F1", 10) << "," << num(m.sigma_F2_iso / 1e6, f1, "ISO sigma_F2", 10)
+                << "\n";
             }
       }
     l << "stage,member,mode,load,cycles per input revolution [-],damage D [-],life [spectra] (empty: no damage),"
@@ -207,13 +225,42 @@ namespace gearfem::analytical::gearbox
     write_file_atomically(dir / "scuffing_path.csv", p.str());
   }
 
+  void write_sn_csv(const GearboxInput &in, const GearboxResult &r, const std::filesystem::path &file)
+  {
+    const std::string f = file.string();
+    std::ostringstream s;
+    s << "stage,member,mode,load,bin [-],input torque [N m],stress [MPa],cycles per spectrum [-],"
+         "cycles to failure [-] (empty: no damage),n/N [-],curve (0 semi-log; 1 ISO) [-],sigma_n [MPa],N_ref [-],"
+         "B [MPa/decade],N_static [-],Y_static [-]\n";
+    for (const MemberLife &m : r.lives)
+      {
+        const StageMaterial &mat = in.materials.at(m.stage_index);
+        const fatigue::SNCurve &c = m.mode == "contact" ? mat.contact : mat.bending;
+        for (std::size_t l = 0; l < m.stress.size(); ++l)
+          for (std::size_t b = 0; b < m.stress[l].size(); ++b)
+            {
+              const double sigma = m.stress[l][b], n = m.cycles[l][b], N = fatigue::cycles_to_failure(c, sigma);
+              const std::string load = m.stress.size() > 1 ? m.detail + " #" + std::to_string(l + 1) : m.detail;
+              s << m.stage << "," << m.member << "," << m.mode << ",\"" << load << "\"," << b + 1 << ","
+                << num(in.spectrum.torques[b], f, "torque") << "," << num(sigma / 1e6, f, "stress", 10) << ","
+                << num(n, f, "cycles", 10) << "," << (std::isinf(N) ? "" : num(N, f, "N", 10)) << ","
+                << num(std::isinf(N) ? 0.0 : n / N, f, "n/N", 10) << ","
+                << (c.kind == fatigue::SNCurve::Kind::iso ? 1 : 0) << "," << num(c.sigma_n / 1e6, f, "sigma_n") << ","
+                << num(c.N_ref, f, "N_ref") << "," << num(c.B / 1e6, f, "B") << "," << num(c.N_static, f, "N_static")
+                << "," << num(c.Y_static, f, "Y_static") << "\n";
+            }
+      }
+    write_file_atomically(file, s.str());
+  }
+
   GearboxTables gearbox_tables(const GearboxInput &in, const GearboxResult &r)
   {
     GearboxTables t;
     for (const auto &[n, u] : std::vector<std::pair<const char *, const char *>>{
            {"input torque", "N m"}, {"F_t", "N"}, {"sigma_H", "MPa"}, {"sigma_F1", "MPa"}, {"sigma_F2", "MPa"},
            {"ISO sigma_H1", "MPa"}, {"ISO sigma_H2", "MPa"}, {"theta_fl_max", "K"}, {"theta_B_max", "C"},
-           {"h_c_min", "um"}, {"lambda_min", "-"}, {"P_scuffing", "-"}})
+           {"h_c_min", "um"}, {"lambda_min", "-"}, {"P_scuffing", "-"}, {"ISO sigma_F1", "MPa"},
+           {"ISO sigma_F2", "MPa"}})
       t.meshes.add_column(n, u);
     for (std::size_t k = 0; k < r.train.stages.size(); ++k)
       {
@@ -226,7 +273,8 @@ namespace gearfem::analytical::gearbox
               const double T            = in.spectrum.torques[b];
               t.meshes.add_row({T, st.tangential_load(r.train.torques(T)[k]), m.sigma_H / 1e6, m.sigma_F1 / 1e6,
                                 m.sigma_F2 / 1e6, m.sigma_H1_iso / 1e6, m.sigma_H2_iso / 1e6, c.theta_fl_max,
-                                c.theta_B_max, c.h_c_min * 1e6, c.lambda_min, c.P});
+                                c.theta_B_max, c.h_c_min * 1e6, c.lambda_min, c.P, m.sigma_F1_iso / 1e6,
+                                m.sigma_F2_iso / 1e6});
               t.mesh_stage.push_back(st.in.name);
               t.mesh_name.push_back(st.meshes[j].name);
             }

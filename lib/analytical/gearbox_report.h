@@ -14,9 +14,15 @@
 
 namespace gearfem::analytical::gearbox
 {
+  /// `appendix`: markdown inserted before the fatigue-life section (e.g. the FE stresses).
   void write_markdown(const GearboxInput &in, const GearboxResult &r, const std::string &stress_source,
-                      const std::filesystem::path &file, const std::string &title);
+                      const std::filesystem::path &file, const std::string &title,
+                      const std::string &appendix = "");
   void write_csv(const GearboxInput &in, const GearboxResult &r, const std::filesystem::path &dir);
+  /// gearbox_sn.csv: one row per member, mode, load and bin (stress, load cycles per
+  /// spectrum, cycles to failure, damage n/N) with the member's S-N curve (kind, sigma_n,
+  /// N_ref, B, N_static, Y_static), for the S-N plot of scripts/plot_gearbox.py. Atomic.
+  void write_sn_csv(const GearboxInput &in, const GearboxResult &r, const std::filesystem::path &file);
 
   /// The numbers of gearbox.csv (`meshes`: one row per stage, mesh and bin) and of
   /// gearbox_life.csv (`lives`: one row per member and mode), in the same engineering units,

@@ -1,5 +1,6 @@
 // The full rating of a generated pair (what `gearfem rate` prints) for seed 001.
 #include "analytical/elastic.h"
+#include "analytical/gearbox.h"
 #include "analytical/rating.h"
 #include "base/errors.h"
 
@@ -129,4 +130,53 @@ TEST(Rate, IsoTransverseLoadFactorFromAccuracyGrade)
   const double cga = r8.row("ISO 6336", "c_gamma_alpha").values[0];
   const double K = eps / 2 * (0.9 + 0.4 * cga * (fpb - ya) / FtHb);
   EXPECT_NEAR(k8[1], std::max(1.0, std::min(K, 1.0 / (Ze * Ze))), 1e-12);
+}
+
+// ISO 6336-3 root stress of a gearbox mesh (lib/analytical/gearbox.cc: critical section from
+// the standard's rack-fillet closed form, load radius from the AGMA 908 line of action)
+// against `gearfem rate` of the same external pair (an independent path: the generated
+// tooth, the 30-degree tangent found on its fillet, the load radius from the GearPair's
+// points B and D). Seed 001 stage-2 sun-planet mesh (27/44, m 3.5, x 0.7/0.6, b 50, a =
+// r_w1 + r_w2 = 128.8 mm) and stage-1 (16/28, m 6, b 110).
+TEST(Rate, GearboxIsoRootStressAgainstRate)
+{
+  for (int stage : {1, 2})
+    {
+      analytical::gearbox::StageInput s;
+      s.name = "Stage " + std::to_string(stage);
+      s.z_sun = stage == 1 ? 16 : 27, s.z_planet = stage == 1 ? 28 : 44, s.z_ring = stage == 1 ? 74 : 117;
+      s.x_sun = 0.7, s.x_planet = 0.6, s.x_ring = -0.9;
+      s.module = stage == 1 ? 6e-3 : 3.5e-3, s.face_width = stage == 1 ? 110e-3 : 50e-3;
+      s.pressure_angle = 20 * deg;
+      const analytical::gearbox::AgmaFactors f;
+      const analytical::gearbox::Stage st = analytical::gearbox::build_stage(s, f);
+      const analytical::gearbox::MeshGeometry &g = st.meshes[0];
+      const double Ft = 10000.0;
+      const analytical::gearbox::MeshStress ms = analytical::gearbox::mesh_stress(g, Ft, f);
+
+      auto gear = [&](int z, double x) {
+        geometry::GearParameters p;
+        p.teeth = z, p.profile_shift = x, p.face_width = s.face_width;
+        p.rack.module = s.module, p.rack.pressure_angle = s.pressure_angle, p.rack.root_radius = 0.25;
+        return geometry::ToothProfile::generate(p);
+      };
+      const geometry::GearPair pair(gear(g.z1, g.x1), gear(g.z2, g.x2), {g.a});
+      RatingInput in;
+      in.torques = {Ft * g.r_w1}; // the same F_t,ISO = F_t r_w1/r_1 = 2T/d1
+      const RatingReport r = rate(pair, in);
+      for (int i : {1, 2})
+        {
+          const std::string k = std::to_string(i);
+          const iso6336::RootFactors &F = i == 1 ? g.F1_iso : g.F2_iso;
+          const double sF = i == 1 ? ms.sigma_F1_iso : ms.sigma_F2_iso;
+          std::printf("stage %d member %d: Y_F %.4f (rate %.4f), Y_S %.4f (%.4f), sigma_F %.2f (%.2f) MPa\n", stage, i,
+                      F.Y_F, r.row("ISO 6336", "Y_F" + k).values[0], F.Y_S, r.row("ISO 6336", "Y_S" + k).values[0],
+                      sF / 1e6, r.row("ISO 6336", "sigma_F" + k).values[0]);
+          EXPECT_NEAR(F.Y_F / r.row("ISO 6336", "Y_F" + k).values[0], 1.0, 0.005);
+          EXPECT_NEAR(F.Y_S / r.row("ISO 6336", "Y_S" + k).values[0], 1.0, 0.005);
+          EXPECT_NEAR(sF / 1e6 / r.row("ISO 6336", "sigma_F" + k).values[0], 1.0, 0.005);
+        }
+      // The ring (internal) is not rated in bending.
+      EXPECT_EQ(analytical::gearbox::mesh_stress(st.meshes[1], Ft, f).sigma_F2_iso, 0.0);
+    }
 }
