@@ -41,8 +41,8 @@ subsection Optimise
   end
 end
 subsection Optimiser
-  set Methods         = bobyqa
-  set Max evaluations = 14
+  set Methods         = cobyla
+  set Max evaluations = 8
 end
 subsection Rack
   set Module = 3
@@ -164,4 +164,30 @@ TEST(ReliefOptimisation, LowersPeakToPeakBelowUnrelievedFromShortRelief)
   for (std::size_t i = 0; i < again.ste[0].size(); ++i)
     EXPECT_NEAR(again.ste[0][i], start.result.ste[0][i], 1e-6 * start.result.ste[0][i]);
   EXPECT_EQ(model.builds(), 1);
+}
+
+// Per-gear variables map to the gears in order, and an amount below 1 nm is no relief
+// (build_pair refuses a zero-amount relief); checked against the problem's own definition.
+TEST(ReliefOptimisation, PerGearVariablesAndBounds)
+{
+  const ReliefStudy s0 = parse("subsection Optimise\n subsection Tip relief\n set Variables = per gear\n"
+                               " set Kind = parabolic\n set Start point = 8, 3, 0, 2\n end\nend\n");
+  const ReliefProblem &p = s0.problem;
+  ASSERT_EQ(p.n_variables(), 4);
+  EXPECT_EQ(p.variable_names(), (std::vector<std::string>{"C_a1", "L1", "C_a2", "L2"}));
+  const std::vector<double> lo = {0.0, 1e-3, 0.0, 1e-3}, hi = {20e-6, 7e-3, 20e-6, 7e-3};
+  for (int i = 0; i < 4; ++i)
+    {
+      EXPECT_NEAR(p.lower()[i], lo[i], 1e-15) << i;
+      EXPECT_NEAR(p.upper()[i], hi[i], 1e-15) << i;
+    }
+  const auto gi = relief_geometry(s0.geometry, p, p.start_point());
+  EXPECT_EQ(gi.gear1.relief.kind, geometry::TipRelief::Kind::parabolic);
+  EXPECT_NEAR(gi.gear1.relief.amount, 8e-6, 1e-15);
+  EXPECT_NEAR(gi.gear1.relief.length, 3e-3, 1e-15);
+  EXPECT_EQ(gi.gear2.relief.kind, geometry::TipRelief::Kind::none);
+  EXPECT_NO_THROW((void)geometry::build_pair(gi));
+  // Wrong number of start values for 4 variables.
+  EXPECT_EQ(parameter_of("subsection Optimise\n subsection Tip relief\n set Variables = per gear\n end\nend\n"),
+            "Optimise/Tip relief/Start point");
 }
