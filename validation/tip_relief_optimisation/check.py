@@ -13,8 +13,10 @@ References, each independent of the optimiser:
     unrelieved pair's; so an optimum below it must be longer than that;
   - `gearfem solve` of the written optimum.prm (gap route): the same STE as the optimiser's
     evaluation (optimum.prm is the optimised design);
-  - the optimum re-meshed with its relief (Micro-geometry = geometry): peak-to-peak STE
-    within the gap route's accuracy of issue 18 (0.5 % of the mean STE)."""
+  - the optimum re-meshed with its relief (Micro-geometry = geometry, an independent
+    discretisation): peak-to-peak STE within 1 % of the mean STE of the gap route's (at
+    h_contact 0.2 mm two meshes of the same gear differ by 0.75 %, validation/micro_geometry),
+    and still below half the unrelieved peak-to-peak."""
 import argparse
 import csv
 import math
@@ -76,8 +78,11 @@ for t in torques:
     c.abs(f"solve optimum.prm (gap): p-p STE at {t} N m [um]", pp(gap[t]), pp(o), 1e-4 * max(o),
           "the optimiser's evaluation of the optimum")
     mean = sum(exact[t]) / len(exact[t])
-    c.abs(f"optimum re-meshed with its relief: p-p STE at {t} N m [um]", pp(exact[t]), pp(o), 5e-3 * mean,
-          "gap vs geometry route, issue 18 §2 tolerance: 0.5 % of mean STE")
+    c.abs(f"optimum re-meshed with its relief: p-p STE at {t} N m [um]", pp(exact[t]), pp(o), 1e-2 * mean,
+          "gap vs geometry route: 1 % of mean STE at h_contact 0.2 mm, where two meshes of the same gear "
+          "already differ by 0.75 % (validation/micro_geometry/README.md; 0.5 % needs h 0.1 mm)")
+    c.at_most(f"optimum re-meshed: p-p STE at {t} N m / no relief", pp(exact[t]) / pp(ste[("no relief", t)]), 0.5,
+              "the optimum is not an artefact of the gap idealisation")
 
 text = open(os.path.join(a.out, "study.log")).read()
 c.true("progress lines with i/N and ETA", "ETA" in text, "ETA" in text, "present", "project rule")
