@@ -24,7 +24,7 @@ mkdir -p "$out/solve_exact"
 { cat "$out/study/optimum.prm"; printf 'subsection Contact\n  set Micro-geometry = geometry\nend\n'; } > "$out/solve_exact/case.prm"
 "$gearfem" solve "$out/solve_exact/case.prm" --output-dir "$out/solve_exact" > "$out/solve_exact.log"
 tail -n 4 "$out/solve_exact.log"
-for f in relief.png relief_history.png summary.md; do
-  [ -f "$out/study/$f" ] && cp "$out/study/$f" "$here/$f"
+for f in relief.png relief_history.png; do
+  [ -f "$out/study/$f" ] && cp "$out/study/$f" "$here/$f.tmp.png" && mv "$here/$f.tmp.png" "$here/$f"
 done
 check --out "$out"
