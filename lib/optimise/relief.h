@@ -103,8 +103,9 @@ namespace gearfem::optimise
     /// STE cycles of design x [m] at the problem's torques; a solver failure gives ok = false.
     ReliefResult evaluate(const std::vector<double> &x);
     const std::vector<double> &positions() const { return positions_; } ///< roll angles [rad]
+    /// Mesh, assembly and factorisation time [s]: spent once, in the constructor (an
+    /// evaluation never re-enters those timer sections).
     double setup_seconds() const;
-    int builds() const { return 1; }              ///< models built (mesh + factorisation)
     int evaluations() const { return evaluations_; }
     const contact::GearContactModel &model() const { return *model_; }
 
