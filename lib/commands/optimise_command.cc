@@ -3,6 +3,7 @@
 // write.
 #include "commands/command.h"
 #include "optimise/parameters.h"
+#include "optimise/relief_parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -10,8 +11,32 @@ namespace gearfem::commands
 {
   namespace
   {
+    /// Problem = tip relief: the FE model in the loop (lib/optimise/relief.h).
+    void run_relief(dealii::ParameterHandler &prm, const RunContext &ctx)
+    {
+      std::ostream &out              = *ctx.out;
+      const optimise::ReliefStudy st = optimise::parse_relief_study(prm);
+      const auto &p                  = st.problem;
+      out << "optimise: tip relief (" << (p.per_gear ? "per gear, 4" : "same on both gears, 2") << " variables), "
+          << optimise::to_string(p.measure) << " STE, " << optimise::to_string(p.aggregate) << " over "
+          << p.torques.size() << " torque(s), " << p.positions << " positions per cycle, method "
+          << optimise::to_string(st.optimiser.method) << ", at most " << st.optimiser.max_evaluations << " evaluations"
+          << (p.grid_points > 0 ? ", then a grid of " + std::to_string(p.grid_points) + " points per variable" : "")
+          << "\n";
+      if (ctx.validate_only)
+        return;
+      const optimise::ReliefStudyResult r = optimise::run_relief_study(st, &out);
+      out << "\n";
+      optimise::print_relief_summary(st, r, out);
+      optimise::write_relief_study(st, r, ctx.output_dir);
+      run_plot_script("plot_relief.py", {ctx.output_dir.string()}, ctx.out);
+      out << "wrote " << (ctx.output_dir / "optimise.csv").string() << ", ste.csv, summary.md, optimum.prm\n";
+    }
+
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
+      if (optimise::is_relief_problem(prm))
+        return run_relief(prm, ctx);
       std::ostream           &out   = *ctx.out;
       const optimise::Study   study = optimise::parse_study_parameters(prm);
       out << "optimise: seed 003 " << optimise::to_string(study.kind) << ", " << study.runs.size()
@@ -31,7 +56,7 @@ namespace gearfem::commands
   {
     Command c;
     c.name    = "optimise";
-    c.summary = "B-spline tooth-profile optimisation for minimum, constant equivalent curvature (seed 003)";
+    c.summary = "Profile optimisation: seed 003 B-spline tooth (min. curvature) or tip relief for min. STE (FE in the loop)";
     c.description =
       "Seed 003 (Koronaios 2021): the pinion rack (case 1) or pinion flank (case 2) as a\n"
       "degree-4 B-spline, equivalent curvature 1/R along the path of contact, objectives\n"
@@ -42,10 +67,18 @@ namespace gearfem::commands
       "from one start and writes optimise.csv (history), summary.md (table), curvature.csv,\n"
       "profiles.csv, optimum.prm (case 2: runs with `gearfem solve`) and, with\n"
       "/usr/bin/python3 and matplotlib, curvature.png, profiles.png, convergence.png.\n\n"
+      "With `Optimise/Problem = tip relief`: amount and length of linear or parabolic tip\n"
+      "relief (both gears alike: 2 variables, or per gear: 4) for minimum peak-to-peak STE or\n"
+      "first mesh harmonic at the torques of Solve/Torques (maximum or weighted mean), with the\n"
+      "FE model of the gearfem solve sections in the loop: built once, each evaluation applies\n"
+      "the relief as a gap modification and sweeps one mesh cycle. Optional grid over the same\n"
+      "box (Tip relief/Grid points). Writes optimise.csv, ste.csv, summary.md, optimum.prm\n"
+      "(runs with `gearfem solve`) and relief.png (STE before and after at each torque).\n\n"
       "Sample runs:\n"
       "  gearfem optimise inputs/seed003_opt_case2.prm\n"
       "  gearfem optimise inputs/seed003_opt_case1.prm --output-dir results/case1\n"
-      "  gearfem optimise --validate inputs/seed003_opt_case2.prm";
+      "  gearfem optimise --validate inputs/seed003_opt_case2.prm\n"
+      "  gearfem optimise inputs/tip_relief_opt.prm";
     c.declare = optimise::declare_study_parameters;
     c.run     = run;
     return c;

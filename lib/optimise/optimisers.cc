@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace gearfem::optimise
 {
@@ -47,9 +48,9 @@ namespace gearfem::optimise
     class Problem
     {
     public:
-      Problem(const Design &d, const EvaluationSettings &s, const OptimiserSettings &o,
-              const ProgressCallback &cb, OptimiseResult &r)
-        : d_(d), s_(s), o_(o), cb_(cb), r_(r), t0_(std::chrono::steady_clock::now())
+      Problem(const EvaluateFunction &f, const OptimiserSettings &o, const ProgressCallback &cb,
+              OptimiseResult &r)
+        : f_(f), o_(o), cb_(cb), r_(r), t0_(std::chrono::steady_clock::now())
       {}
 
       const Evaluation &eval(const std::vector<double> &x)
@@ -57,7 +58,7 @@ namespace gearfem::optimise
         if (r_.evaluations >= o_.max_evaluations)
           throw BudgetExhausted{};
         last_x_ = x;
-        last_   = d_.evaluate(x, s_);
+        last_   = f_(x);
         ++r_.evaluations;
         if (last_.feasible && last_.objective < r_.best.objective)
           r_.best = last_, r_.x_best = x;
@@ -111,8 +112,7 @@ namespace gearfem::optimise
       const OptimiserSettings &settings() const { return o_; }
 
     private:
-      const Design &d_;
-      const EvaluationSettings &s_;
+      const EvaluateFunction &f_;
       const OptimiserSettings &o_;
       const ProgressCallback &cb_;
       OptimiseResult &r_;
@@ -308,7 +308,7 @@ namespace gearfem::optimise
     }
 
     void run_nlopt(Problem &P, const MethodInfo &mi, std::vector<double> x, const std::vector<double> &lb,
-                   const std::vector<double> &ub, OptimiseResult &r)
+                   const std::vector<double> &ub, double step_fraction, OptimiseResult &r)
     {
       const auto &o = P.settings();
       nlopt::srand(o.seed);
@@ -321,7 +321,14 @@ namespace gearfem::optimise
         opt.add_inequality_mconstraint(nlopt_constraints, &D, std::vector<double>(n_constraints, 1e-9));
       opt.set_maxeval(o.max_evaluations);
       if (!mi.gradient && mi.alg != nlopt::GN_ISRES && mi.alg != nlopt::GN_CRS2_LM && mi.alg != nlopt::GN_ESCH)
-        opt.set_initial_step(0.1 * o.bound); // COBYLA, BOBYQA: first steps of 10 % of the box
+        {
+          // COBYLA, BOBYQA: first steps of a fraction of the box (seed 003: 5 % of its width,
+          // i.e. 10 % of the half-width `Bound`).
+          std::vector<double> step(x.size());
+          for (std::size_t i = 0; i < x.size(); ++i)
+            step[i] = step_fraction * (ub[i] - lb[i]);
+          opt.set_initial_step(step);
+        }
       opt.set_xtol_rel(o.xtol_rel);
       opt.set_ftol_rel(o.ftol_rel);
       if (o.population > 0)
@@ -375,30 +382,30 @@ namespace gearfem::optimise
     require_range("Optimiser/Population", population, 0, 100000);
   }
 
-  OptimiseResult optimise(const Design &design, const std::vector<double> &x0, const EvaluationSettings &eval,
-                          const OptimiserSettings &settings, const ProgressCallback &progress)
+  OptimiseResult optimise(const EvaluateFunction &f, const std::vector<double> &x0, const std::vector<double> &lb,
+                          const std::vector<double> &ub, const OptimiserSettings &settings,
+                          const ProgressCallback &progress, double initial_step)
   {
     settings.check();
+    if (lb.size() != x0.size() || ub.size() != x0.size())
+      throw std::logic_error("optimise: bounds and start point differ in size");
     OptimiseResult r;
     r.method  = settings.method;
     r.x_start = x0;
-    r.start   = design.evaluate(x0, eval);
+    r.start   = f(x0);
     if (!r.start.feasible)
       throw InputError("Optimise/Start point", "the start design", "a feasible design",
                        "infeasible start: " + r.start.reason);
     r.best   = r.start;
     r.x_best = x0;
-    std::vector<double> lb(x0.size()), ub(x0.size());
-    for (size_t i = 0; i < x0.size(); ++i)
-      lb[i] = x0[i] - settings.bound, ub[i] = x0[i] + settings.bound;
     const auto t0 = std::chrono::steady_clock::now();
-    Problem    P(design, eval, settings, progress, r);
+    Problem    P(f, settings, progress, r);
     try
       {
         if (settings.method == Method::steepest_descent)
           steepest_descent(P, x0, P.barrier(x0), lb, ub, r);
         else
-          run_nlopt(P, info(settings.method), x0, lb, ub, r);
+          run_nlopt(P, info(settings.method), x0, lb, ub, initial_step, r);
       }
     catch (const BudgetExhausted &)
       {
@@ -406,5 +413,16 @@ namespace gearfem::optimise
       }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
+  }
+
+  OptimiseResult optimise(const Design &design, const std::vector<double> &x0, const EvaluationSettings &eval,
+                          const OptimiserSettings &settings, const ProgressCallback &progress)
+  {
+    settings.check();
+    std::vector<double> lb(x0.size()), ub(x0.size());
+    for (size_t i = 0; i < x0.size(); ++i)
+      lb[i] = x0[i] - settings.bound, ub[i] = x0[i] + settings.bound;
+    const EvaluateFunction f = [&](const std::vector<double> &x) { return design.evaluate(x, eval); };
+    return optimise(f, x0, lb, ub, settings, progress, 0.05);
   }
 } // namespace gearfem::optimise

@@ -73,6 +73,17 @@ namespace gearfem::optimise
   /// naming "Optimise/Start point" with the reason when x0 is infeasible, and for bad
   /// settings (OptimiserSettings::check). Never returns an infeasible design: when no better
   /// feasible point is found, the start is returned.
+  /// Any problem: an evaluation of a design vector (objective, feasibility, the named
+  /// constraints; a problem without constraints reports them all met, c = -1).
+  using EvaluateFunction = std::function<Evaluation(const std::vector<double> &)>;
+  /// Minimise f from x0 in the box [lb, ub] (OptimiserSettings::bound is not used). COBYLA
+  /// and BOBYQA take first steps of `initial_step` times the box width. Throws InputError
+  /// naming "Optimise/Start point" when f(x0) is infeasible, and for bad settings. The
+  /// evaluation of x0 is not counted in the history (it is OptimiseResult::start).
+  OptimiseResult optimise(const EvaluateFunction &f, const std::vector<double> &x0, const std::vector<double> &lb,
+                          const std::vector<double> &ub, const OptimiserSettings &settings,
+                          const ProgressCallback &progress = nullptr, double initial_step = 0.05);
+
   OptimiseResult optimise(const Design &design, const std::vector<double> &x0,
                           const EvaluationSettings &eval, const OptimiserSettings &settings,
                           const ProgressCallback &progress = nullptr);

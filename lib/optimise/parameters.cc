@@ -2,7 +2,10 @@
 #include "optimise/parameters.h"
 
 #include "base/errors.h"
+#include "contact/parameters.h"
+#include "optimise/relief_parameters.h"
 #include "params/checked.h"
+#include "post/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -19,6 +22,10 @@ namespace gearfem::optimise
   void declare_study_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Optimise");
+    prm.declare_entry("Problem", "profile", Selection("profile|tip relief"),
+                      "profile: seed 003's B-spline tooth (the entries below, docs/optimise.md); tip relief: "
+                      "amount and length of tip relief for minimum STE with the FE model in the loop "
+                      "(subsection Tip relief, and the gearfem solve sections Rack ... Solve). Units: none.");
     prm.declare_entry("Case", "case 2", Selection("case 1|case 2"),
                       "Seed 003 case: 1 = pinion rack B-spline (4 free coordinates), objective max + mean "
                       "+ std of |1/R|; 2 = pinion flank B-spline (8 free coordinates), objective "
@@ -52,6 +59,7 @@ namespace gearfem::optimise
     prm.declare_entry("Start point", "", Anything(),
                       "Free coordinates, comma-separated (case 1: u1, u2, v2, u3; case 2: x0, y0, ..., "
                       "x3, y3); empty = the default start (docs/optimise.md). Units: multiples of the module.");
+    declare_relief_parameters(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Optimiser");
@@ -74,6 +82,17 @@ namespace gearfem::optimise
     prm.declare_entry("Seed", "3", Integer(), "Random seed of the global methods. Units: none.");
     prm.declare_entry("Population", "0", Integer(), "Global methods; 0 = NLopt's default. Units: none.");
     prm.leave_subsection();
+    // The case the tip-relief problem optimises (`gearfem solve` sections).
+    contact::declare_gear_contact_input(prm);
+    post::declare_post_parameters(prm);
+  }
+
+  bool is_relief_problem(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Optimise");
+    const bool r = prm.get("Problem") == "tip relief";
+    prm.leave_subsection();
+    return r;
   }
 
   Study parse_study_parameters(dealii::ParameterHandler &prm)

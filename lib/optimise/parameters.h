@@ -12,7 +12,11 @@ namespace dealii
 
 namespace gearfem::optimise
 {
+  /// Also declares `Optimise/Problem`, `Optimise/Tip relief` (relief_parameters.h) and the
+  /// `gearfem solve` sections that the tip-relief problem reads.
   void declare_study_parameters(dealii::ParameterHandler &prm);
+  /// `Optimise/Problem = tip relief`.
+  bool is_relief_problem(dealii::ParameterHandler &prm);
   /// Read and check (check_study: InputError naming the parameter, exit status 2).
   Study parse_study_parameters(dealii::ParameterHandler &prm);
 } // namespace gearfem::optimise

@@ -5,6 +5,9 @@
 #   optimise_checks.sh short GEARFEM SRC_DIR   a 200-evaluation case-1 COBYLA run: exit 0, every
 #                                              file written, objective lowered, optimum feasible,
 #                                              no NaN, and the sinusoid row equals Table 5.2 (0.2 %)
+#   optimise_checks.sh relief GEARFEM SRC_DIR  a short tip-relief run (coarse sector, COBYLA): exit 0,
+#                                              every file written, no NaN, objective not above the
+#                                              start's, and optimum.prm accepted by `gearfem solve`
 set -uo pipefail
 mode=$1 gearfem=$2 arg=$3
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -43,6 +46,20 @@ case $mode in
     read -r mean max std < <(awk -F'|' '$2 ~ /^ sinusoid/ { print $6, $7, $8 }' "$work/out/summary.md")
     near_rel "$mean" 0.1333 2e-3 && near_rel "$max" 0.6719 2e-3 && near_rel "$std" 0.1542 2e-3 \
       || fail "sinusoid row $mean $max $std differs from Table 5.2"
+    ;;
+  relief)
+    "$gearfem" optimise "$arg/tests/regression/data/optimise/short_relief.prm" --output-dir "$work/out" > "$work/log" 2>&1 \
+      || { cat "$work/log"; fail "run failed"; }
+    for f in optimise.csv ste.csv summary.md optimum.prm; do
+      [ -s "$work/out/$f" ] || fail "$f missing"
+    done
+    grep -qi "nan" "$work/out/optimise.csv" "$work/out/ste.csv" "$work/out/summary.md" && fail "NaN written"
+    grep -q "evaluations .*ETA" "$work/log" || fail "no progress line with i/N and ETA"
+    start=$(awk -F, 'NR == 2 { print $6 }' "$work/out/optimise.csv")
+    best=$(awk -F, 'NR > 1 { v = $7 } END { print v }' "$work/out/optimise.csv")
+    awk -v s="$start" -v b="$best" 'BEGIN { exit !(b <= s) }' || fail "objective raised: $start -> $best"
+    head -1 "$work/out/optimum.prm" | grep -q "^# gearfem solve" || fail "optimum.prm is not a solve case"
+    "$gearfem" solve --validate "$work/out/optimum.prm" > "$work/solve.log" 2>&1 || { cat "$work/solve.log"; fail "gearfem solve refuses optimum.prm"; }
     ;;
   *) fail "unknown mode $mode" ;;
 esac

@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""Plot a tip-relief `gearfem optimise` run (Optimise/Problem = tip relief): the STE over one
+mesh cycle at each torque for no relief, the start, the optimum and (if run) the best grid
+point (relief.png); and the optimiser's objective against FE evaluations beside the grid's
+(relief_history.png).
+
+Usage: plot_relief.py OUTPUT_DIR
+Reads OUTPUT_DIR/ste.csv and optimise.csv (docs/optimise.md) and writes the PNG files
+atomically (temporary name in the same folder, then os.replace).
+"""
+import csv
+import os
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save(fig, path):
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp, dpi=130, bbox_inches="tight")
+    plt.close(fig)
+    os.replace(tmp, path)
+
+
+def main(d):
+    curves = defaultdict(lambda: defaultdict(lambda: ([], [])))
+    torques = []
+    with open(os.path.join(d, "ste.csv")) as f:
+        for row in csv.DictReader(f):
+            t = float(row["torque [N m]"])
+            if t not in torques:
+                torques.append(t)
+            x, y = curves[t][row["design"]]
+            x.append(float(row["cycle fraction"]))
+            y.append(float(row["STE [um]"]))
+    styles = {"no relief": "k-", "start": "g:", "optimum": "r-", "grid best": "b--"}
+    n = len(torques)
+    fig, axes = plt.subplots(1, n, figsize=(4.2 * n + 0.8, 4), squeeze=False)
+    for ax, t in zip(axes[0], torques):
+        for name, (x, y) in curves[t].items():
+            pp = max(y) - min(y)
+            ax.plot(x + [1.0], y + [y[0]], styles.get(name, "-"), marker=".", ms=3,
+                    label=f"{name} (p-p {pp:.2f} um)")
+        ax.set_title(f"T1 = {t:g} N m")
+        ax.set_xlabel("mesh cycle from A [-]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    axes[0][0].set_ylabel("STE [um]")
+    fig.suptitle("Static transmission error before and after the tip-relief optimisation")
+    save(fig, os.path.join(d, "relief.png"))
+
+    runs = defaultdict(lambda: ([], []))
+    with open(os.path.join(d, "optimise.csv")) as f:
+        for row in csv.DictReader(f):
+            x, y = runs[row["run"]]
+            x.append(int(row["evaluation"]))
+            y.append(float(row["best [um]"]))
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for name, (x, y) in runs.items():
+        ax.step(x, y, where="post", label=name)
+    ax.set_xlabel("FE evaluations (one sweep of the cycle at every torque each)")
+    ax.set_ylabel("best objective so far [um]")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, os.path.join(d, "relief_history.png"))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
