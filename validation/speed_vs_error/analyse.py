@@ -6,7 +6,8 @@ speed-against-error study (issue 14 section 1). Reads results/<pair>/<rung>/ of 
                                     results/which_model.md, results/pareto_<metric>.png
 
 Metrics per rung and torque: mean STE, peak-to-peak STE, the amplitudes of the first three
-mesh-order harmonics of STE (DFT over one pitch), mean mesh stiffness (secant, per face
+mesh-order harmonics of STE (DFT over one pitch; their errors relative to the reference's
+first-harmonic amplitude), mean mesh stiffness (secant, per face
 width), max root stress (pinion and gear, the worse error of the two), max Hertzian
 pressure (FE: the largest recovered flank-to-flank p_max over the cycle). The error of a
 rung is its largest relative error over the three torques. Time: wall time of one
@@ -172,7 +173,10 @@ def rel_error(m, r, metric):
         else:
             if metric not in mv or mv[metric] is None or not np.isfinite(mv[metric]):
                 return None
-            errs.append(abs(mv[metric] / rv[metric] - 1))
+            # Harmonic amplitudes relative to the reference's first harmonic: a higher
+            # harmonic can be nearly zero (FZG type C: 0.035 um of order 2 at 94 N m).
+            den = rv["h1"] if metric in ("h1", "h2", "h3") else rv[metric]
+            errs.append(abs(mv[metric] - rv[metric]) / abs(den))
     return max(errs) if errs else None
 
 
@@ -216,6 +220,7 @@ def write_table(data, err, path):
              "40-position cycle [s] (the machine was shared; the wall time of the FE sweep is in the next "
              "column); `set-up`: CPU time of parsing, meshing, assembly and factorisation [s] (calibrated: "
              "the fit plus the reference FE of the two training torques); memory: peak resident set [MB]. "
+             "Harmonic errors are relative to the reference's first-harmonic amplitude. "
              "Analytical rungs: the library's own timing of the evaluation (wall, in-process). "
              "`–`: the rung has no such output.", ""]
     for key, rungs in data.items():
@@ -264,7 +269,7 @@ QUESTIONS = [("mean STE within 2 %", ["mean_ste"], 0.02), ("mean mesh stiffness 
              ("first STE harmonic within 5 %", ["h1"], 0.05), ("STE harmonics 1-3 within 10 %", ["h1", "h2", "h3"], 0.10),
              ("mean and p-p STE within 1 %", ["mean_ste", "pp_ste"], 0.01),
              ("root stress within 3 %", ["root_stress"], 0.03), ("root stress within 10 %", ["root_stress"], 0.10),
-             ("max Hertzian pressure within 5 %", ["p_max"], 0.05)]
+             ("max Hertzian pressure within 5 %", ["p_max"], 0.05), ("max Hertzian pressure within 10 %", ["p_max"], 0.10)]
 
 
 def which_model(data, err, path):

@@ -115,7 +115,8 @@ def rate_sections(pair, model, law):
     return {"Material": {"Plane model": "plane stress"},
             "Rating": {"Pinion torques": ", ".join(f"{t:g}" for t in pair["torques"]),
                        "Application factor": "1", "ISO dynamic factor": "1", "AGMA dynamic factor": "1"},
-            "Analytical": {"Stiffness model": model, "Mesh positions": str(POSITIONS), "Corner contact": "true",
+            "Analytical": {"Stiffness model": model, "Mesh positions": str(POSITIONS),
+                           "Corner contact": "true" if pair.get("corner_contact", True) else "false",
                            "Mesh cycle law": law, "Bore diameter 1": f"{bore_d[0]:.4f}",
                            "Bore diameter 2": f"{bore_d[1]:.4f}"}}
 
@@ -132,9 +133,11 @@ def run_analytical(key, pair, name, reuse):
     if name == "calibrated":
         cmd, secs = "calibrate", {"Material": {"Plane model": "plane stress"},
                                   "Calibration": {"Results files": os.path.join(OUT, key, "ref", "out", "results.h5"),
-                                                  "Model": "weber-cornell", "Fit factors": "beam, hertz, body, corner",
-                                                  "Corner radius": "0.1", "Table positions": "40",
-                                                  "Table loads": "8"}}
+                                                  "Model": "weber-cornell", "Table positions": "40", "Table loads": "8"}}
+        if pair.get("corner_contact", True):
+            secs["Calibration"].update({"Fit factors": "beam, hertz, body, corner", "Corner radius": "0.1"})
+        else:
+            secs["Calibration"].update({"Fit factors": "beam, hertz, body", "Corner contact": "false"})
     else:
         model = "potential energy" if name == "potential_energy" else "weber cornell"
         law = "seed000 ricker" if name == "seed000_ricker" else "load sharing"
