@@ -374,6 +374,26 @@ def write_metrics_csv(data, err, path):
     os.replace(tmp, path)
 
 
+def write_summary(data, err, path):
+    """One row per rung: its worst error over the pairs and the range of its CPU costs."""
+    pairs = list(err)
+    lines = ["| model | cycle CPU [s] | set-up CPU [s] | " + " | ".join(l for _, l in METRICS) + " |",
+             "|---|---|---|" + "---|" * len(METRICS)]
+    for n, v in data[pairs[0]].items():
+        if n == "ref" or v[1] in ("modelling choice", "reference check") or not all(n in err[k] for k in pairs):
+            continue
+        cyc = [data[k][n][3]["cycle"] for k in pairs]
+        st = [data[k][n][3]["setup"] for k in pairs]
+        worst = []
+        for m, _ in METRICS:
+            es = [err[k][n][m] for k in pairs]
+            worst.append("–" if any(e is None for e in es) else f"{100 * max(es):.3g}")
+        lines.append(f"| {v[0]} | {min(cyc):.3g}–{max(cyc):.3g} | {min(st):.3g}–{max(st):.3g} | " + " | ".join(worst) + " |")
+    tmp = path + ".tmp"
+    open(tmp, "w").write("\n".join(lines) + "\n")
+    os.replace(tmp, path)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", default=os.path.join(HERE, "results"))
@@ -386,6 +406,7 @@ def main():
     write_metrics_csv(data, err, os.path.join(a.out, "metrics.csv"))
     write_table(data, err, os.path.join(a.out, "table.md"))
     which_model(data, err, os.path.join(a.out, "which_model.md"))
+    write_summary(data, err, os.path.join(a.out, "summary.md"))
     plots(data, err, a.out)
     print("analyse: wrote metrics.csv, table.md, which_model.md and pareto_<metric>.png in", a.out)
     return 0

@@ -61,7 +61,7 @@ def main():
                       "cross-validation of the fit (validation/analytical_vs_fe: <= 0.65 %)")
         if "iso6336" in e and e["iso6336"]["mean_k"] is not None:
             c.info(f"{t}: ISO 6336-1 c_gamma_alpha against the FE mean stiffness",
-                   f"{100 * e['iso6336']['mean_k']:.3g} %", "ISO's c' is an empirical mean over real gear bodies")
+                   f"{100 * e['iso6336']['mean_k']:.3g} %", "-", "ISO's c' is an empirical mean over real gear bodies")
         # Cost ordering: the reference is the slowest FE rung per cycle, analytical rungs < 0.1 s.
         ref_cycle = have["ref"][3]["cycle"]
         if "full_default" in have:

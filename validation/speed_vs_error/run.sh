@@ -15,5 +15,5 @@ export SPEED_VS_ERROR_PAIRS="${SPEED_VS_ERROR_PAIRS:-parker,fzg_c,seed001}"
 /usr/bin/python3 "$here/study.py" --pairs "$SPEED_VS_ERROR_PAIRS" "$@"
 /usr/bin/python3 "$here/analyse.py" --out "$out"
 # The tracked copies only come from a run of all three pairs.
-[ "$SPEED_VS_ERROR_PAIRS" = parker,fzg_c,seed001 ] && cp "$out/table.md" "$out/which_model.md" "$out"/pareto_*.png "$here/"
+[ "$SPEED_VS_ERROR_PAIRS" = parker,fzg_c,seed001 ] && cp "$out/table.md" "$out/which_model.md" "$out/summary.md" "$out"/pareto_*.png "$here/"
 check
