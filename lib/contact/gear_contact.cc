@@ -17,7 +17,7 @@ namespace gearfem::contact
     using Scope = dealii::TimerOutput::Scope;
     const double pi = 3.14159265358979323846;
 
-    std::set<unsigned int> surface_ids(const std::vector<int> &teeth, bool master)
+    std::set<unsigned int> surface_ids(const std::vector<int> &teeth, bool with_fillet)
     {
       namespace b = mesh::boundary;
       std::set<unsigned int> ids;
@@ -26,7 +26,7 @@ namespace gearfem::contact
           ids.insert(b::tooth_id(k, b::flank_drive));
           ids.insert(b::tooth_id(k, b::tip));
           ids.insert(b::tooth_id(k, b::tip_round_drive));
-          if (master)
+          if (with_fillet)
             ids.insert(b::tooth_id(k, b::fillet_drive));
         }
       return ids;
@@ -132,16 +132,19 @@ namespace gearfem::contact
         h_reach_   = std::max(h_reach_, bodies[i].contact_size);
       }
     // Either body may be the master of a tooth pair, so both surfaces carry the drive
-    // fillets (a tip corner pressing into the mate's fillet); fillet nodes are never slaves.
+    // fillets (a tip corner pressing into the mate's fillet); fillet nodes are slaves only
+    // on the teeth of a closed rack, whose concave fillet is conjugate to the mate's tip.
     namespace bd = mesh::boundary;
     for (int i = 0; i < 2; ++i)
       {
         const bool master = options_.per_zone_slaves || i + 1 != options_.slave;
-        surfaces_[i] = std::make_unique<ContactSurface>(*bodies_[i], surface_ids(fine_[i], master));
+        const bool closed = pair_->gear(i + 1).rack().closed();
+        surfaces_[i] = std::make_unique<ContactSurface>(*bodies_[i], surface_ids(fine_[i], master || closed));
         for (const auto &nd : surfaces_[i]->nodes())
           {
             const auto code = bd::code_of(nd.boundary_id);
-            slave_capable_[i].push_back(code == bd::flank_drive || code == bd::tip || code == bd::tip_round_drive);
+            slave_capable_[i].push_back(code == bd::flank_drive || code == bd::tip || code == bd::tip_round_drive ||
+                                        (closed && code == bd::fillet_drive));
           }
       }
     // Tooth of each gear at C when phi1 = 0, and the sense of each body's rotation.

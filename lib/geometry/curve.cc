@@ -228,6 +228,16 @@ namespace gearfem::geometry
   Vec2   AffineCurve::d2(double t) const { return M_ * base_->d2(sigma_ * t); }
   Vec2   AffineCurve::d3(double t) const { return sigma_ * (M_ * base_->d3(sigma_ * t)); }
 
+  // ---------------------------------------------------------------- TrimmedCurve
+  TrimmedCurve::TrimmedCurve(CurvePtr base, double a, double b)
+    : base_(std::move(base))
+    , a_(a)
+    , b_(b)
+  {
+    if (!(a_ < b_ && a_ >= base_->t_begin() && b_ <= base_->t_end()))
+      throw std::logic_error("TrimmedCurve: [a, b] must be a non-empty part of the base range");
+  }
+
   CurvePtr mirrored(CurvePtr c)
   {
     Eigen::Matrix2d M;

@@ -133,6 +133,25 @@ namespace gearfem::geometry
     double sigma_;
   };
 
+  /// The piece of another curve between parameters a < b (same parameter, exact
+  /// derivatives): a B-spline rack split into the pieces that generate flank, fillet and
+  /// root (rack.cc, closed racks).
+  class TrimmedCurve : public Curve
+  {
+  public:
+    TrimmedCurve(CurvePtr base, double a, double b);
+    double t_begin() const override { return a_; }
+    double t_end() const override { return b_; }
+    Vec2 point(double t) const override { return base_->point(t); }
+    Vec2 d1(double t) const override { return base_->d1(t); }
+    Vec2 d2(double t) const override { return base_->d2(t); }
+    Vec2 d3(double t) const override { return base_->d3(t); }
+
+  private:
+    CurvePtr base_;
+    double a_, b_;
+  };
+
   /// Mirror image x -> -x (same parameter and direction).
   CurvePtr mirrored(CurvePtr c);
   /// The same curve traversed in the opposite direction (parameter t -> -t).

@@ -180,11 +180,17 @@ namespace gearfem::geometry
     else
       {
         // Rack-generated path of contact: ends where it leaves the tip circles.
+        // A closed rack's fillet is conjugate profile too: the path runs over it.
+        const bool            closed = g1_.rack().closed();
         std::vector<CurvePtr> rack_flanks;
         for (const auto &rs : g1_.rack().segments())
-          if (rs.generates == RackSegment::Generates::flank)
+          if (rs.generates == RackSegment::Generates::flank || (closed && rs.generates == RackSegment::Generates::fillet))
             rack_flanks.insert(rack_flanks.begin(), rs.curve); // root to tip
-        const auto fl = g1_.flank_segments(Side::coast);     // root to tip
+        std::vector<int> fl = g1_.flank_segments(Side::coast); // root to tip
+        if (closed)
+          for (int i = 0; i < static_cast<int>(g1_.segments().size()); ++i)
+            if (g1_.segments()[i].type == SegmentType::fillet && g1_.segments()[i].side == Side::coast)
+              fl.insert(fl.begin(), i);
         for (std::size_t j = 0; j < fl.size() && j < rack_flanks.size(); ++j)
           {
             const auto &sg = g1_.segments()[fl[j]];
@@ -223,6 +229,30 @@ namespace gearfem::geometry
                              mm(g1_.radii().form) + ")");
         if (std::isnan(phiE))
           phiE = phi_of(path_.back(), path_.back().tl);
+        // One contact point per tooth pair: the pinion angle must change one way along the
+        // active path (inside both tip circles). Racks like seed 003's sinusoid reverse it
+        // (K(u) = -u + m sin(4u/m)): several points of a flank touch at once.
+        // (Each piece on its own: pieces may run in either parameter direction.)
+        for (const auto &pc : path_)
+          for (double k = 0, phi_prev = std::numeric_limits<double>::quiet_NaN(), trend = 0; k <= 400; ++k)
+            {
+              const double t = pc.tl + (pc.th - pc.tl) * k / 400;
+              const Vec2   q = pt(pc, t);
+              if (q.norm() > ra1 || (q - O2).norm() > ra2)
+                continue;
+              const double phi = phi_of(pc, t), step = phi - phi_prev;
+              if (std::abs(step) > 1e-6 * std::abs(phiE - phiA))
+                {
+                  if (trend * step < 0)
+                    throw InputError("Rack/Control points", "the path of contact of " + p1.name + " and " + p2.name,
+                                     "a path along which the contact point moves one way",
+                                     "the contact reverses at r1 = " + mm(q.norm()) +
+                                       ": several points of one flank touch at once, which the path model "
+                                       "(one contact point per tooth pair) does not follow");
+                  trend = step;
+                }
+              phi_prev = phi;
+            }
         gE = gC + rb1 * phiE, gA = gC + rb1 * phiA;
       }
     eps_alpha_ = (gE - gA) / pb;

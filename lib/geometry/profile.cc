@@ -245,6 +245,7 @@ namespace gearfem::geometry
       int i_top = -1, i_first = -1; ///< the segment cut by the tip circle; the highest flank piece
       CurvePtr end_path;            ///< undercut by the end point of the rack flank (or null)
       double   path_lo = 0, path_hi = 0;
+      bool     closed = false;      ///< a closed rack: the fillet is conjugate (active) profile
       CurvePtr tip_arc;             ///< tip rounding (or null)
       double   tip_a0 = 0, tip_a1 = 0;
     };
@@ -420,6 +421,12 @@ namespace gearfem::geometry
             const double tp = base::bisect_bracket([&](double t) { return gc[i]->point(t).x() > 0.0 ? 1.0 : -1.0; },
                                                    ta, tb, true, "pointed-tip radius of " + gear.name);
             const double rp = gc[i]->point(tp).norm();
+            if (r.kind != RackParameters::Kind::standard) // no shift: the tip circle is lowered instead
+              throw InputError(gear.name + "/Tip shortening coefficient", to_string_g(gear.tip_shortening),
+                               ">= " + to_string_g(gear.tip_shortening + (ra - rp) / m + 1e-3) +
+                                 " (a tip circle below the pointed-tooth radius " + to_string_g(rp / units::mm) + " mm)",
+                               "pointed tooth: the flanks of " + gear.name + " meet at radius " +
+                                 to_string_g(rp / units::mm) + " mm (tip thickness <= 0)");
             throw InputError(shift_name, to_string_g(gear.profile_shift),
                              "a value for which the tip circle (" + to_string_g(ra / units::mm) +
                                " mm) stays below the pointed-tooth radius " +
@@ -430,8 +437,9 @@ namespace gearfem::geometry
       const Vec2 tip_point = gc[i_top]->point(lo[i_top]);
       tp.tip_thickness_    = 2 * ra * polar_from_y(tip_point);
       if (!(tp.tip_thickness_ > 0))
-        throw InputError(shift_name, to_string_g(gear.profile_shift), "a positive tip thickness",
-                         "pointed tooth " + gear.name);
+        throw InputError(r.kind == RackParameters::Kind::standard ? shift_name : gear.name + "/Tip shortening coefficient",
+                         to_string_g(r.kind == RackParameters::Kind::standard ? gear.profile_shift : gear.tip_shortening),
+                         "a value that leaves a positive tip thickness", "pointed tooth " + gear.name);
       if (tp.tip_thickness_ < 0.2 * m)
         tp.warnings_.push_back("warning [" + shift_name + "]: tip thickness " +
                                to_string_g(tp.tip_thickness_ / units::mm) + " mm is below 0.2 m = " +
@@ -501,7 +509,8 @@ namespace gearfem::geometry
       tp.radii_.reference = r0;
       tp.radii_.tip       = ra;
       tp.radii_.root      = rf;
-      tp.radii_.form      = gc[i_flank]->point(hi[i_flank]).norm();
+      // Form circle: the lowest point of the conjugate profile (a closed rack's fillet is).
+      tp.radii_.form      = G.closed ? gc[i_fillet]->point(hi[i_fillet]).norm() : gc[i_flank]->point(hi[i_flank]).norm();
       tp.radii_.tip_form  = gc[i_first]->point(lo[i_first]).norm();
       tp.radii_.relief_start = ra;
 
@@ -577,8 +586,9 @@ namespace gearfem::geometry
     G.r0         = rack.generating_pitch_radius();
     G.rb         = G.r0 * std::cos(r.pressure_angle);
     G.ra         = G.r0 + (r.addendum + gear.profile_shift - gear.tip_shortening) * m;
-    G.rf         = G.r0 + (gear.profile_shift - r.dedendum) * m;
+    G.rf         = G.r0 + rack.root_line(); // (x - h_fP*) m; a closed rack's trough
     G.shift_name = gear.name + "/Profile shift coefficient";
+    G.closed     = rack.closed();
     generate_curves(rack, G);
     trim_undercut(gear, rack, G, tp);
     clip_at_tip_circle(gear, G, tp);

@@ -5,6 +5,7 @@
 #include "geometry/rack.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 #include "base/units.h"
 #include "geometry/conjugate.h"
 
@@ -68,6 +69,63 @@ namespace gearfem::geometry
                           RackSegment::Generates::root});
     }
 
+    /// A rack flank that ends level in the middle of the cutter tooth (u = p/2): the
+    /// closed-rack construction, not the cutter tip, completes it.
+    bool ends_level_at_half_pitch(const Curve &c, double half_pitch)
+    {
+      const Vec2 b = c.point(c.t_end()), db = c.d1(c.t_end());
+      return std::abs(b.x() - half_pitch) <= 1e-9 * half_pitch && std::abs(db.y()) <= 1e-9 * db.norm();
+    }
+
+    /// Split a closed rack (level crest at u = 0 on the tooth axis, level trough at u = p/2)
+    /// into the pieces that generate flank, fillet and root: the fillet from the inflection
+    /// nearest the trough (the convex cutter-tip part, whose conjugate is the concave tooth
+    /// root), the root the last 0.05 m (at most half the fillet) before the trough. The
+    /// crest must lie at v = h_aP* m and the trough at v = -h_fP* m, so that the tip and
+    /// root circles of both gears are those of the rack.
+    void split_closed_rack(GeneratingRack &rack, const CurvePtr &full, double half_pitch, double ha, double hf,
+                           const std::string &gear_name)
+    {
+      const double m = rack.module();
+      const Vec2   a = full->point(full->t_begin()), b = full->point(full->t_end());
+      const Vec2   da = full->d1(full->t_begin());
+      if (!(std::abs(a.x()) <= 1e-9 * half_pitch && std::abs(da.y()) <= 1e-9 * da.norm()))
+        throw InputError("Rack/Control points", "first point (" + to_string_g(a.x() / m) + ", " + to_string_g(a.y() / m) + ")",
+                         "a level crest at u = 0 for a rack that ends level at u = p/2 (a closed rack)",
+                         "the rack of " + gear_name + " must span the tooth axis to the middle of the cutter tooth");
+      auto require_level = [&](const std::string &name, double coeff, double v, const std::string &what) {
+        if (std::abs(coeff * m - v) > 1e-9 * m)
+          throw InputError(name, to_string_g(coeff), to_string_g(v / m) + " (the " + what + " of the closed rack, in modules)",
+                           "the " + what + " of a closed rack sets the " + (what == "crest" ? "tip" : "root") +
+                             " circle of " + gear_name);
+      };
+      require_level("Rack/Addendum coefficient", ha, a.y(), "crest");
+      require_level("Rack/Dedendum coefficient", hf, -b.y(), "trough");
+      const double t0 = full->t_begin(), t1 = full->t_end();
+      const int    n  = 2000;
+      double       ti    = t0;
+      bool         found = false;
+      for (int k = n - 1; k >= 1 && !found; --k)
+        {
+          const double ta = t0 + (t1 - t0) * k / n, tb = t0 + (t1 - t0) * (k + 1) / n;
+          if ((found = full->curvature(ta) <= 0 && full->curvature(tb) > 0))
+            ti = base::bisect_bracket([&](double t) { return full->curvature(t) > 0 ? 1.0 : -1.0; }, ta, tb, true,
+                                      "inflection of the closed rack of " + gear_name);
+        }
+      if (!found)
+        throw InputError("Rack/Control points", "a closed rack without an inflection",
+                         "a rack that turns from its level crest down to its level trough",
+                         "the rack of " + gear_name + " has no convex part near its trough to generate a fillet");
+      const double ur = std::max(half_pitch - 0.05 * m, 0.5 * (full->point(ti).x() + half_pitch));
+      const double tr = base::bisect_bracket([&](double t) { return full->point(t).x() - ur; }, ti, t1, true,
+                                             "root piece of the closed rack of " + gear_name);
+      rack.segments_.push_back({std::make_shared<TrimmedCurve>(full, t0, ti), nullptr, RackSegment::Generates::flank});
+      rack.segments_.push_back({std::make_shared<TrimmedCurve>(full, ti, tr), nullptr, RackSegment::Generates::fillet});
+      rack.segments_.push_back({std::make_shared<TrimmedCurve>(full, tr, t1), nullptr, RackSegment::Generates::root});
+      rack.closed_ = full;
+      rack.v_root_ = b.y();
+    }
+
     void check_monotone(const Curve &c, const std::string &what)
     {
       const int n = 400;
@@ -103,6 +161,7 @@ namespace gearfem::geometry
     rack.r0_         = gear.reference_radius();
     const double v_t = (x - r.dedendum) * m; // cutter tip line (gear root)
     const double v_b = (x + r.addendum) * m; // cutter space bottom (gear tip, unshortened)
+    rack.v_root_     = v_t;
 
     if (r.kind == RackParameters::Kind::standard)
       {
@@ -153,6 +212,11 @@ namespace gearfem::geometry
           std::reverse(cp.begin(), cp.end());
         CurvePtr spline = std::make_shared<BSplineCurve>(cp, r.spline_degree);
         check_monotone(*spline, "B-spline rack");
+        if (ends_level_at_half_pitch(*spline, p / 2))
+          {
+            split_closed_rack(rack, spline, p / 2, r.addendum, r.dedendum, gear.name);
+            return rack;
+          }
         rack.segments_.push_back({spline, nullptr, RackSegment::Generates::flank});
         append_cutter_tip(rack.segments_, *spline, v_t, p / 2, r.root_radius * m, gear.name);
         return rack;
@@ -186,6 +250,15 @@ namespace gearfem::geometry
     const double   p = units::pi * m_;
     Eigen::Matrix2d M;
     M << -1, 0, 0, -1;
+    if (closed_)
+      {
+        // The complement of a closed rack is closed: its crest is this trough, its trough
+        // this crest.
+        auto c = std::make_shared<AffineCurve>(closed_, M, Vec2(p / 2, 0.0), true);
+        check_monotone(*c, "complementary rack of the mating gear");
+        split_closed_rack(rack, c, p / 2, mate.rack.addendum, mate.rack.dedendum, mate.name);
+        return rack;
+      }
     for (auto it = segments_.rbegin(); it != segments_.rend(); ++it)
       if (const auto &seg = *it; seg.generates == RackSegment::Generates::flank)
         {
@@ -194,6 +267,7 @@ namespace gearfem::geometry
           rack.segments_.push_back({c, nullptr, RackSegment::Generates::flank});
         }
     const double v_t = (mate.profile_shift - mate.rack.dedendum) * m_;
+    rack.v_root_     = v_t;
     append_cutter_tip(rack.segments_, *rack.segments_.back().curve, v_t, p / 2,
                       mate.rack.root_radius * m_, mate.name);
     return rack;

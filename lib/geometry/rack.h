@@ -99,9 +99,20 @@ namespace gearfem::geometry
     double module() const { return m_; }
     const std::vector<RackSegment> &segments() const { return segments_; }
     double generating_pitch_radius() const { return r0_; }
+    /// v of the line that generates the root circle (the cutter tip line; for a closed
+    /// rack its trough) [m].
+    double root_line() const { return v_root_; }
+    /// A closed rack: a B-spline flank that starts level on the gear tooth axis (u = 0,
+    /// its crest generates the tooth tip) and ends level in the middle of the cutter tooth
+    /// (u = p/2, its trough generates the root), like seed 003's sinusoid and case-1 racks.
+    /// It needs no cutter tip: the whole rack generates flank, fillet and root, and the
+    /// concave part of the tooth (its fillet) may carry contact.
+    bool closed() const { return closed_ != nullptr; }
 
     std::vector<RackSegment> segments_;
-    double r0_ = 0.0;
-    double m_  = 0.0;
+    double r0_     = 0.0;
+    double m_      = 0.0;
+    double v_root_ = 0.0;
+    CurvePtr closed_; ///< the whole closed rack flank (crest to trough), or null
   };
 } // namespace gearfem::geometry

@@ -298,12 +298,14 @@ namespace gearfem::mesh
             piece.boundary_id = boundary::tooth_id(mod(k, z), code);
             piece.tooth       = mod(k, z);
             piece.segment     = int(s);
+            // The fillet of a closed rack's tooth carries contact (geometry::GeneratingRack::closed).
+            const bool contact_fillet = sg.type == geometry::SegmentType::fillet && tooth.rack().closed();
             const bool flank_like = sg.type == geometry::SegmentType::flank ||
                                     sg.type == geometry::SegmentType::tip ||
-                                    sg.type == geometry::SegmentType::tip_rounding;
+                                    sg.type == geometry::SegmentType::tip_rounding || contact_fillet;
             const bool coast = sg.side == geometry::Side::coast &&
                                (sg.type == geometry::SegmentType::flank ||
-                                sg.type == geometry::SegmentType::tip_rounding);
+                                sg.type == geometry::SegmentType::tip_rounding || contact_fillet);
             const double h_flank = coast ? coast_size(p) : contact_size(p, m);
             piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
             // Split fine flanks at the requested radii (those inside the piece).

@@ -185,22 +185,26 @@ namespace gearfem::optimise
       o << (c2 ? "# gearfem solve\n" : "# gearfem profile (case 1: see the note below)\n");
       o << "# Seed 003 " << to_string(s.kind) << " optimum by " << to_string(best.method) << " (gearfem optimise): objective "
         << g(r.runs[r.best_run].optimum.objective) << " 1/mm.\n";
+      const auto cp = d.control_points(best.x_best);
       if (!c2)
-        o << "# Note: the case-1 rack has level ends (v' = 0 at crest and trough); gearfem's cutter\n"
-             "# construction needs a rack flank that ends going down, so `gearfem profile` refuses it.\n";
+        o << "# Case 1: a closed rack (level crest at u = 0, level trough at u = p/2) whose crest and\n"
+             "# trough set the addendum and dedendum; the tips are shortened by 0.05 m so that they are\n"
+             "# not pointed. gearfem builds the teeth but refuses the pair (exit 2) when its path of\n"
+             "# contact reverses (several points of one flank in contact at once, as for the sinusoid)\n"
+             "# or its contact ratio is below 1: see docs/optimise.md.\n";
       o << "subsection Rack\n  set Module                  = " << g(s.pair.module * 1e3, 10)
         << "\n  set Pressure angle          = " << g(s.pair.pressure_angle * 180 / M_PI, 10)
-        << "\n  set Addendum coefficient    = " << g(s.pair.addendum, 10)
-        << "\n  set Dedendum coefficient    = " << g(s.pair.dedendum, 10)
+        << "\n  set Addendum coefficient    = " << g(c2 ? s.pair.addendum : cp.front().y(), 10)
+        << "\n  set Dedendum coefficient    = " << g(c2 ? s.pair.dedendum : -cp.back().y(), 10)
         << "\n  set Root radius coefficient = " << g(s.pair.root_radius, 10)
         << "\n  set Profile type            = " << (c2 ? "bspline flank" : "bspline rack") << "\n  set Control points          = ";
-      const auto cp = d.control_points(best.x_best);
       for (std::size_t i = 0; i < cp.size(); ++i)
         o << (i ? "; " : "") << g(cp[i].x(), 12) << ", " << g(cp[i].y(), 12);
       o << "\n  set Spline degree           = 4\nend\n";
       for (int i : {1, 2})
         o << "subsection Gear " << i << "\n  set Number of teeth = " << (i == 1 ? s.pair.z1 : s.pair.z2)
-          << "\n  set Face width      = " << g(s.face_width * 1e3, 10) << "\nend\n";
+          << "\n  set Face width      = " << g(s.face_width * 1e3, 10)
+          << (c2 ? "" : "\n  set Tip shortening coefficient = 0.05") << "\nend\n";
       if (c2) // the FE check of seed 003 (ch. 7), as inputs/seed003_opt_fe_involute.prm
         o << "subsection Mesh\n  set Model        = sector\n  set Sector teeth = 3\n  set h_fillet     = 0.15\n"
              "  set h_body       = 2\nend\nsubsection Solve\n  set Torques             = 5\n"

@@ -79,6 +79,16 @@ eps_gp = pair.get("transverse contact ratio")
 c.rel("case 2 optimum: gearfem profile contact ratio vs optimiser", eps_gp, b["eps"], 0.005,
       "GearPair's rack-generated path (independent construction)")
 
+# Case 1's optimum is a closed rack (level crest and trough). gearfem builds its teeth but must
+# refuse the pair with the physical reason, exit status 2: along it the contact point reverses
+# (rack displacement K = -(u + v v') grows near the crest, where the crest's radius of
+# curvature is below its height, and falls mid-flank), as along the sinusoid.
+log1 = open(os.path.join(a.out, "case1_profile.log")).read()
+c.true("case 1 optimum.prm: gearfem profile refuses the pair, exit 2, naming the reversing path",
+       "exit status 2" in log1 and "contact reverses" in log1,
+       next((l.strip() for l in log1.splitlines() if "error" in l), log1.strip()[-120:]),
+       "exit 2, 'contact reverses'", "the closed-form K(u) argument of docs/optimise.md")
+
 
 def fe(d):
     """Mean over the positions of the largest Hertz pressure of the pairs in contact (FE load

@@ -272,3 +272,79 @@ TEST(Pair, DesignChecks)
   // Centre distance below the tip clearance limit.
   expect_error([] { make_pair(20, 40, 3 * mm, 0, 0, 88 * mm); }, "Pair/Centre distance");
 }
+
+// Closed racks (seed 003 case 1 and the sinusoid: a level crest on the tooth axis, a level
+// trough in the middle of the cutter tooth; no cutter tip). The case-1 start, the sinusoid
+// fit (0, 1), (pi/8, 1), (pi/4, 0), (3pi/8, -1), (pi/2, -1) in module units.
+TEST(Pair, ClosedRackTeethAndRefusedPath)
+{
+  const double m  = 2.5 * mm;
+  auto         g1 = gear("Gear 1", 19, m);
+  auto         g2 = gear("Gear 2", 55, m);
+  g1.rack.kind           = RackParameters::Kind::bspline_rack;
+  g1.rack.control_points = {{0, 1}, {M_PI / 8, 1}, {M_PI / 4, 0}, {3 * M_PI / 8, -1}, {M_PI / 2, -1}};
+  g1.rack.dedendum       = 1.0;
+  g1.tip_shortening = g2.tip_shortening = 0.05;
+  const auto rack = GeneratingRack::from_parameters(g1);
+  ASSERT_TRUE(rack.closed());
+  ASSERT_EQ(rack.segments().size(), 3u);
+  using G = RackSegment::Generates;
+  EXPECT_EQ(rack.segments()[0].generates, G::flank);
+  EXPECT_EQ(rack.segments()[1].generates, G::fillet);
+  EXPECT_EQ(rack.segments()[2].generates, G::root);
+  // The pieces join (one spline), the fillet starts at the inflection (curvature 0) and the
+  // root ends on the trough, which is the root line.
+  const auto &f = *rack.segments()[0].curve, &fi = *rack.segments()[1].curve, &rt = *rack.segments()[2].curve;
+  EXPECT_EQ(f.point(f.t_end()), fi.point(fi.t_begin()));
+  EXPECT_NEAR(fi.curvature(fi.t_begin()) * m, 0.0, 1e-9);
+  EXPECT_NEAR(rack.root_line(), -m, 1e-15);
+  EXPECT_NEAR(rt.point(rt.t_end()).x(), M_PI * m / 2, 1e-15);
+
+  // The teeth: root circle at the trough (r0 - m), tip circle r0 + (1 - 0.05) m; the
+  // outline is continuous and the root ends in the middle of the tooth space (pi/z from
+  // the tooth axis): the neighbouring tooth continues it.
+  const auto p1 = ToothProfile::generate(g1);
+  const auto p2 = ToothProfile::generate_mate(g2, p1);
+  for (const auto *p : {&p1, &p2})
+    {
+      const double r0 = p->radii().reference;
+      const int    z  = p->teeth();
+      EXPECT_NEAR(p->radii().root, r0 - m, 1e-12);
+      EXPECT_NEAR(p->radii().tip, r0 + 0.95 * m, 1e-12);
+      const auto &segs = p->segments();
+      for (std::size_t i = 0; i + 1 < segs.size(); ++i)
+        EXPECT_LT((segs[i].end() - segs[i + 1].start()).norm(), 1e-9 * m) << "joint " << i;
+      const Vec2 q = segs.front().start();
+      EXPECT_NEAR(std::atan2(q.x(), q.y()), M_PI / z, 1e-9);
+      EXPECT_NEAR(q.norm(), r0 - m, 1e-9 * m);
+      // The form circle is the lowest conjugate point: the end of the fillet.
+      EXPECT_LT(p->radii().form, r0 - 0.5 * m);
+    }
+  EXPECT_TRUE(p2.rack().closed());
+
+  // The crest must be the addendum: a clear error otherwise.
+  auto bad           = g1;
+  bad.rack.addendum  = 1.25;
+  try
+    {
+      (void)GeneratingRack::from_parameters(bad);
+      FAIL() << "no error";
+    }
+  catch (const gearfem::InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("Rack/Addendum coefficient"), std::string::npos) << e.what();
+    }
+  // The pair is refused with the reason: along this rack the contact point reverses.
+  // Independently: the rack displacement of the contact is K(u) = -(u + v v'), with
+  // dK/du = -(1 + v'^2 + v v''); at the crest v' = 0, v = m and v'' < -1/m (the crest's radius
+  // of curvature is below m), so K first grows, while mid-flank (v = 0) it falls.
+  try
+    {
+      GearPair pair(p1, p2, PairParameters{});
+      FAIL() << "no error";
+    }
+  catch (const gearfem::InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("contact reverses"), std::string::npos) << e.what();
+    }
+}
