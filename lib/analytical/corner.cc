@@ -2,6 +2,7 @@
 #include "analytical/corner.h"
 
 #include "base/errors.h"
+#include "base/roots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -149,6 +150,38 @@ namespace gearfem::analytical
         sd.s_end = pinion_corner ? g.g_E : g.length - g.g_A;
       return sd;
     }
+
+    /// The pinion-frame gap: the root of F(x) = x - G(g + x) with G(g) > 0 (F(0) < 0). The
+    /// fixed-point iteration x <- G(g + x) converges when G' ~ d/R << 1, but far beyond E
+    /// (FZG type C, 16/24: x ~ 4 mm at g = 29.9 mm) G' approaches 1 and it stalls; then the
+    /// root is bracketed by doubling steps and bisected. G is not finite where the corner
+    /// leaves the mate flank: if it becomes so before F changes sign, there is no contact
+    /// (the result is not finite).
+    double pinion_frame_gap(const Side &e, double g, double length)
+    {
+      double x = e.gap(g);
+      for (int it = 0; it < 100 && std::isfinite(x); ++it)
+        {
+          const double next = e.gap(g + x);
+          if (std::abs(next - x) <= 1e-15 * length)
+            return next;
+          x = next;
+        }
+      if (!std::isfinite(x))
+        return x;
+      auto F = [&](double y) { return y - e.gap(g + y); };
+      double lo = 0, hi = e.gap(g), f_hi = F(hi);
+      for (int k = 0; !(f_hi >= 0); ++k)
+        {
+          if (!std::isfinite(f_hi))
+            return f_hi;
+          if (k == 60 || hi > length)
+            throw SolverError("corner contact: no root of x = G(g + x) within the line of action at g = " +
+                              to_string_g(g) + " m (last x = " + to_string_g(hi) + " m)");
+          lo = hi, hi *= 2, f_hi = F(hi);
+        }
+      return base::bisect_bracket(F, lo, hi, true, "corner contact: pinion-frame gap x = G(g + x)");
+    }
   } // namespace
 
   CornerContact corner_contact(const CornerGeometry &geo, double g, GapFrame frame)
@@ -162,21 +195,8 @@ namespace gearfem::analytical
         // turning by x/rb1 instead, the configuration is that of rigid position g + x with the
         // gear turned back by x/rb2, so x solves x = G(g + x) (a contraction: G' ~ d/R << 1).
         double x = e.gap(g);
-        if (frame == GapFrame::pinion)
-          {
-            // A fixed point, not a bracketed root: G is not finite where the corner leaves
-            // the mate flank, so the iteration stops there (no contact) instead.
-            bool done = false;
-            for (int it = 0; it < 100 && std::isfinite(x) && !done; ++it)
-              {
-                const double next = e.gap(g + x);
-                done = std::abs(next - x) <= 1e-15 * geo.length;
-                x = next;
-              }
-            if (std::isfinite(x) && !done)
-              throw SolverError("corner contact: the pinion-frame gap x = G(g + x) did not converge in 100 "
-                                "iterations at g = " + to_string_g(g) + " m (last x = " + to_string_g(x) + " m)");
-          }
+        if (frame == GapFrame::pinion && std::isfinite(x) && x > 0)
+          x = pinion_frame_gap(e, g, geo.length);
         if (!std::isfinite(x))
           return out;
         out.gap = std::max(0.0, x);

@@ -327,3 +327,42 @@ TEST(CornerGap, TipRounding)
       EXPECT_NEAR(corner_gap(G, g, GapFrame::mating), best, 2e-9) << d;
     }
 }
+
+// Far beyond E on the FZG type C pair (16/24, m 4.5, x 0.1817/0.1715, a 91.5 mm) the
+// pinion-frame gap x = G(g + x) is about 4 mm and G' approaches 1: the fixed-point
+// iteration alone stalled there (gearfem rate exited 3). The bracketed root must agree with
+// the brute-force rotation over the whole pitch beyond E, and be non-decreasing.
+TEST(CornerGap, PinionFrameFarBeyondEFzgTypeC)
+{
+  const double m = 4.5e-3, al = 20 * deg, x1 = 0.1817, x2 = 0.1715;
+  const int    z1 = 16, z2 = 24;
+  auto inv = [](double a) { return std::tan(a) - a; };
+  const double target = inv(al) + 2 * (x1 + x2) * std::tan(al) / (z1 + z2);
+  double aw = al;
+  for (int i = 0; i < 50; ++i) // Newton on inv(aw) = target (inv' = tan^2)
+    aw -= (inv(aw) - target) / std::pow(std::tan(aw), 2);
+  CornerGeometry G;
+  G.rb1 = 0.5 * m * z1 * std::cos(al), G.rb2 = 0.5 * m * z2 * std::cos(al);
+  const double a = (G.rb1 + G.rb2) / std::cos(aw);
+  G.r_tip1 = 0.5 * m * z1 + m * (1 + x1), G.r_tip2 = 0.5 * m * z2 + m * (1 + x2);
+  G.length = a * std::sin(aw);
+  G.g_E = std::sqrt(G.r_tip1 * G.r_tip1 - G.rb1 * G.rb1);
+  G.g_A = G.length - std::sqrt(G.r_tip2 * G.r_tip2 - G.rb2 * G.rb2);
+  const Brute B(G);
+  const double pb = pi * m * std::cos(al);
+  double prev = 0, worst = 0, largest = 0;
+  for (int k = 1; k <= 40; ++k)
+    {
+      const double g = G.g_E + pb * k / 40;
+      double x = 0;
+      ASSERT_NO_THROW(x = corner_gap(G, g, GapFrame::pinion)) << "g = " << g;
+      if (!std::isfinite(x))
+        break; // the corner has left the gear flank: no contact from here on
+      EXPECT_NEAR(x, B.gap_end_pinion_turns(g), 1e-9) << "g = " << g;
+      EXPECT_GE(x, prev - 1e-15);
+      worst = std::max(worst, std::abs(x - B.gap_end_pinion_turns(g))), prev = x, largest = std::max(largest, x);
+    }
+  EXPECT_GT(largest, 1e-3); // the hard region (gaps of millimetres) was reached
+  std::printf("FZG C pinion-frame corner gap: up to %.3f mm, max |difference| to brute force %.2e m\n",
+              largest * 1e3, worst);
+}
