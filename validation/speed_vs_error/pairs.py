@@ -55,10 +55,11 @@ end
 """,
         module=4.5, teeth=(16, 24), shift=(0.1817, 0.1715), face_width=14.0,
         torques=(94.1, 183.4, 302.0),
-        # The analytical corner contact OA/BΓ does not converge on this pair (the fixed point
-        # x = G(g + x) of lib/analytical/corner.cc runs off to millimetres, exit 3): its
-        # analytical rungs go without it (load sharing on A..E only).
-        corner_contact=False),
+        # The analytical corner contact OA/BΓ did not converge on this pair until session 11
+        # (the fixed point x = G(g + x) of lib/analytical/corner.cc stalled at millimetres,
+        # exit 3; now a bracketed root): the tracked tables of 2026-11-23 ran its analytical
+        # rungs without it; validation/RESULTS.md has the rungs re-run with it.
+        corner_contact=True),
     # Seed 001 (Siasos 2010): 23/69, m 4, b 75/70, E 205 GPa; the torques of its FE
     # comparison (200-500 N m, validation/RESULTS.md) spanned by three.
     "seed001": dict(
