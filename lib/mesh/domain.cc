@@ -453,6 +453,11 @@ namespace gearfem::mesh
     }
   } // namespace
 
+  namespace
+  {
+    std::string inverted_where(const MeshData &m); // below, with is_inverted
+  } // namespace
+
   MeshData mesh_domain(const Domain &domain, const MeshingOptions &options)
   {
     validate_domain(domain);
@@ -487,8 +492,8 @@ namespace gearfem::mesh
 
     const QualityReport q = quality(out);
     if (q.n_inverted > 0)
-      gmsh_failure("produced " + std::to_string(q.n_inverted) + " inverted cells",
-                   "refine the mesh near strongly curved boundaries");
+      gmsh_failure("produced " + std::to_string(q.n_inverted) + " inverted cells" + inverted_where(out),
+                   "refine the mesh near strongly curved boundaries (Mesh/h_fillet, Mesh/h_contact)");
     return out;
   }
 
@@ -544,6 +549,27 @@ namespace gearfem::mesh
             return true;
         }
       return false;
+    }
+
+    /// Where the first inverted cell is, and how many of its vertices lie on the boundary
+    /// (those the untangling may not move), for the error message.
+    std::string inverted_where(const MeshData &m)
+    {
+      std::vector<char> on_boundary(m.vertices.size(), 0);
+      for (const auto &e : m.boundary_edges)
+        on_boundary[e.v0] = on_boundary[e.v1] = 1;
+      for (const auto &c : m.cells)
+        if (is_inverted(m, c))
+          {
+            Vec2 centre(0, 0);
+            int  fixed = 0;
+            for (unsigned v : c)
+              centre += 0.25 * m.vertices[v], fixed += on_boundary[v];
+            return " (the first at (" + to_string_g(centre.x() * 1e3) + ", " + to_string_g(centre.y() * 1e3) +
+                   ") mm, radius " + to_string_g(centre.norm() * 1e3) + " mm, " + std::to_string(fixed) +
+                   " of its 4 vertices on the boundary)";
+          }
+      return "";
     }
   } // namespace
 
