@@ -51,7 +51,7 @@ def main(d):
         ax.set_title(f"T1 = {t:g} N m")
         ax.set_xlabel("mesh cycle from A [-]")
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)  # below: no curve hidden
     axes[0][0].set_ylabel("STE [um]")
     fig.suptitle("Static transmission error before and after the tip-relief optimisation")
     save(fig, os.path.join(d, "relief.png"))
@@ -85,7 +85,7 @@ def plot_robust(d, study_torques):
             x.append(float(row["torque [N m]"]))
             y.append(float(row["p-p [um]"]))
     styles = {"no relief": "k-", "optimum": "r-", "grid best": "b--"}
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    fig, ax = plt.subplots(figsize=(8.5, 4.2))
     for name, (x, y) in curves.items():
         xy = sorted(zip(x, y))
         label = "robust optimum (worst of the study torques)" if name == "optimum" else name
@@ -96,7 +96,7 @@ def plot_robust(d, study_torques):
     ax.set_ylabel("peak-to-peak STE [um]")
     ax.set_ylim(bottom=0)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_title("Single-load against robust tip relief over a torque range")
     save(fig, os.path.join(d, "relief_robust.png"))
 
