@@ -22,6 +22,8 @@ namespace gearfem::commands
           << p.torques.size() << " torque(s), " << p.positions << " positions per cycle, method "
           << optimise::to_string(st.optimiser.method) << ", at most " << st.optimiser.max_evaluations << " evaluations"
           << (p.grid_points > 0 ? ", then a grid of " + std::to_string(p.grid_points) + " points per variable" : "")
+          << (p.single_torque_optima ? ", then the single-load optimum at each torque" : "")
+          << (p.check_torques.empty() ? "" : ", then a check at " + std::to_string(p.check_torques.size()) + " torques")
           << "\n";
       if (ctx.validate_only)
         return;
@@ -30,7 +32,8 @@ namespace gearfem::commands
       optimise::print_relief_summary(st, r, out);
       optimise::write_relief_study(st, r, ctx.output_dir);
       run_plot_script("plot_relief.py", {ctx.output_dir.string()}, ctx.out);
-      out << "wrote " << (ctx.output_dir / "optimise.csv").string() << ", ste.csv, summary.md, optimum.prm\n";
+      out << "wrote " << (ctx.output_dir / "optimise.csv").string() << ", ste.csv, summary.md, optimum.prm"
+          << (r.check.empty() ? "" : ", robust.csv") << "\n";
     }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
@@ -73,7 +76,9 @@ namespace gearfem::commands
       "FE model of the gearfem solve sections in the loop: built once, each evaluation applies\n"
       "the relief as a gap modification and sweeps one mesh cycle. Optional grid over the same\n"
       "box (Tip relief/Grid points). Writes optimise.csv, ste.csv, summary.md, optimum.prm\n"
-      "(runs with `gearfem solve`) and relief.png (STE before and after at each torque).\n\n"
+      "(runs with `gearfem solve`) and relief.png (STE before and after at each torque).\n"
+      "Tip relief/Single-torque optima also optimises at each torque alone; Tip relief/Check\n"
+      "torques evaluates the designs at other torques (robust.csv, relief_robust.png).\n\n"
       "Sample runs:\n"
       "  gearfem optimise inputs/seed003_opt_case2.prm\n"
       "  gearfem optimise inputs/seed003_opt_case1.prm --output-dir results/case1\n"

@@ -95,6 +95,37 @@ namespace gearfem::optimise
     return r;
   }
 
+  OptimiserSection read_optimiser_section(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Optimiser");
+    OptimiserSection r;
+    OptimiserSettings &o = r.settings;
+    o.max_evaluations    = params::get_integer(prm, "Max evaluations");
+    o.bound              = params::get_double(prm, "Bound");
+    o.fd_step            = params::get_double(prm, "Finite-difference step");
+    o.xtol_rel           = params::get_double(prm, "Relative x tolerance");
+    o.ftol_rel           = params::get_double(prm, "Relative f tolerance");
+    o.iterations         = params::get_integer(prm, "Iterations");
+    o.golden_tolerance   = params::get_double(prm, "Golden-section tolerance");
+    o.line_search_steps  = params::get_integer(prm, "Line-search steps");
+    const int seed       = params::get_integer(prm, "Seed");
+    require_range("Optimiser/Seed", seed, 0, 2147483647);
+    o.seed         = static_cast<unsigned int>(seed);
+    o.population   = params::get_integer(prm, "Population");
+    r.methods_text = prm.get("Methods");
+    prm.leave_subsection();
+    std::stringstream methods(r.methods_text);
+    for (std::string item; std::getline(methods, item, ',');)
+      {
+        const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+        if (b != std::string::npos)
+          r.methods.push_back(method_from_string(item.substr(b, e - b + 1), "Optimiser/Methods"));
+      }
+    if (!r.methods.empty())
+      o.method = r.methods.front();
+    return r;
+  }
+
   Study parse_study_parameters(dealii::ParameterHandler &prm)
   {
     Study s;
@@ -117,30 +148,12 @@ namespace gearfem::optimise
     s.start                  = params::get_doubles(prm, "Start point");
     prm.leave_subsection();
 
-    prm.enter_subsection("Optimiser");
-    OptimiserSettings o;
-    o.max_evaluations   = params::get_integer(prm, "Max evaluations");
-    o.bound             = params::get_double(prm, "Bound");
-    o.fd_step           = params::get_double(prm, "Finite-difference step");
-    o.xtol_rel          = params::get_double(prm, "Relative x tolerance");
-    o.ftol_rel          = params::get_double(prm, "Relative f tolerance");
-    o.iterations        = params::get_integer(prm, "Iterations");
-    o.golden_tolerance  = params::get_double(prm, "Golden-section tolerance");
-    o.line_search_steps = params::get_integer(prm, "Line-search steps");
-    const int seed      = params::get_integer(prm, "Seed");
-    require_range("Optimiser/Seed", seed, 0, 2147483647);
-    o.seed       = static_cast<unsigned int>(seed);
-    o.population = params::get_integer(prm, "Population");
-    std::stringstream methods(prm.get("Methods"));
-    for (std::string item; std::getline(methods, item, ',');)
+    const OptimiserSection o = read_optimiser_section(prm);
+    for (const Method m : o.methods)
       {
-        const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-        if (b == std::string::npos)
-          continue;
-        o.method = method_from_string(item.substr(b, e - b + 1), "Optimiser/Methods");
-        s.runs.push_back(o);
+        s.runs.push_back(o.settings);
+        s.runs.back().method = m;
       }
-    prm.leave_subsection();
     check_study(s);
     return s;
   }

@@ -12,6 +12,7 @@
 #include <complex>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace gearfem::optimise
 {
@@ -92,6 +93,15 @@ namespace gearfem::optimise
         if (!(sum > 0))
           throw InputError(section + "Torque weights", "all 0", "at least one weight > 0");
       }
+    if (single_torque_optima && torques.size() < 2)
+      throw InputError(section + "Single-torque optima", "true",
+                       "false while Solve/Torques has one torque (" + g(torques[0]) + " N m)",
+                       "the single-load optima are compared with the robust optimum over 2 or more torques");
+    if (check_torques.size() > 50)
+      throw InputError(section + "Check torques", std::to_string(check_torques.size()) + " values",
+                       "0 (none) to 50 torques > 0 N m");
+    for (const double t : check_torques)
+      require_range(section + "Check torques", t, 1e-6, 1e6, "N m");
     require_range("Solve/Number of positions", positions, 8, 1000);
     require_range(section + "Grid points", grid_points, 0, 50);
     if (grid_points == 1)
@@ -111,6 +121,18 @@ namespace gearfem::optimise
                           std::string(amount ? "um" : "mm") + " (" + variable_names()[i] + ")");
           }
       }
+  }
+
+  ReliefProblem ReliefProblem::at_torques(const std::vector<double> &t) const
+  {
+    ReliefProblem p        = *this;
+    p.torques              = t;
+    p.weights              = {};
+    p.aggregate            = TorqueAggregate::maximum;
+    p.grid_points          = 0;
+    p.single_torque_optima = false;
+    p.check_torques        = {};
+    return p;
   }
 
   geometry::GeometryInput relief_geometry(const geometry::GeometryInput &geometry, const ReliefProblem &p,
@@ -206,8 +228,12 @@ namespace gearfem::optimise
     };
   } // namespace
 
-  ReliefResult ReliefModel::evaluate(const std::vector<double> &x)
+  ReliefResult ReliefModel::evaluate(const std::vector<double> &x, const ReliefProblem &problem)
   {
+    if (problem.kind != problem_.kind || problem.per_gear != problem_.per_gear ||
+        problem.positions != problem_.positions)
+      throw std::invalid_argument("ReliefModel::evaluate: the problem's variables or positions differ from the "
+                                  "model's");
     const auto t0 = std::chrono::steady_clock::now();
     auto pair     = std::make_unique<geometry::GearPair>(geometry::build_pair(relief_geometry(geometry_, problem_, x)));
     model_->set_micro_geometry(*pair);
@@ -216,7 +242,7 @@ namespace gearfem::optimise
     loading::SweepPlan plan;
     for (const double phi : positions_)
       plan.positions.emplace_back("", phi);
-    plan.torques = problem_.torques;
+    plan.torques = problem.torques;
     SteObserver obs(base_pair_->base_radius(1), plan.torques.size(), plan.positions.size());
     const loading::SweepOutcome o = loading::run_sweep(*model_, plan, {&obs});
     ReliefResult r;
@@ -230,12 +256,12 @@ namespace gearfem::optimise
             double pp, h1, mean;
             cycle_measures(obs.ste[k], pp, h1, mean);
             r.peak_to_peak.push_back(pp), r.harmonic.push_back(h1), r.mean.push_back(mean);
-            const double m = problem_.measure == ReliefMeasure::peak_to_peak ? pp : h1;
-            const double w = problem_.weights.empty() ? 1.0 : problem_.weights[k];
+            const double m = problem.measure == ReliefMeasure::peak_to_peak ? pp : h1;
+            const double w = problem.weights.empty() ? 1.0 : problem.weights[k];
             r.objective    = k == 0 ? m : std::max(r.objective, m);
             sum += w * m, wsum += w;
           }
-        if (problem_.aggregate == TorqueAggregate::weighted_mean)
+        if (problem.aggregate == TorqueAggregate::weighted_mean)
           r.objective = sum / wsum;
         r.ste = std::move(obs.ste);
       }
@@ -249,9 +275,11 @@ namespace gearfem::optimise
     class Recorder
     {
     public:
-      Recorder(ReliefModel &m, ReliefRun &run)
-        : m_(m), run_(run), t0_(std::chrono::steady_clock::now())
-      {}
+      Recorder(ReliefModel &m, const ReliefProblem &p, ReliefRun &run)
+        : m_(m), p_(p), run_(run), t0_(std::chrono::steady_clock::now())
+      {
+        run_.torques = p.torques;
+      }
       const ReliefRow &operator()(const std::vector<double> &x)
       {
         auto it = memo_.find(x);
@@ -260,7 +288,7 @@ namespace gearfem::optimise
         ReliefRow row;
         row.evaluation = static_cast<int>(run_.history.size()) + 1;
         row.x          = x;
-        row.result     = m_.evaluate(x);
+        row.result     = m_.evaluate(x, p_);
         const bool better =
           row.result.ok && (run_.best < 0 || row.result.objective < run_.history[run_.best].result.objective);
         if (better)
@@ -278,6 +306,7 @@ namespace gearfem::optimise
 
     private:
       ReliefModel &m_;
+      const ReliefProblem &p_;
       ReliefRun &run_;
       std::chrono::steady_clock::time_point t0_;
       std::map<std::vector<double>, std::size_t> memo_;
@@ -300,7 +329,7 @@ namespace gearfem::optimise
     settings.check();
     ReliefRun run;
     run.name = to_string(settings.method);
-    Recorder   rec(model, run);
+    Recorder   rec(model, p, run);
     const auto lo = p.lower(), hi = p.upper();
     const std::size_t n = lo.size();
     // The optimiser works on u in [0, 1]^n: amounts [um] and lengths [mm] on one scale.
@@ -347,7 +376,7 @@ namespace gearfem::optimise
     ReliefRun run;
     const int n = p.n_variables();
     run.name    = "grid " + std::to_string(points) + "^" + std::to_string(n);
-    Recorder   rec(model, run);
+    Recorder   rec(model, p, run);
     const auto lo = p.lower(), hi = p.upper();
     std::size_t total = 1;
     for (int i = 0; i < n; ++i)
@@ -404,6 +433,18 @@ namespace gearfem::optimise
           *out << r.grid.name << ": " << r.grid.history.size() << " FE evaluations, " << g(r.grid.seconds, 3)
                << " s, best " << g(r.grid.best_row().result.objective, 5) << " um at "
                << design_text(s.problem, r.grid.best_row().x) << std::endl;
+      }
+    if (s.problem.single_torque_optima)
+      r.single = single_load_optima(model, s.problem, s.optimiser, out);
+    if (!s.problem.check_torques.empty())
+      {
+        std::vector<std::pair<std::string, std::vector<double>>> designs = {{"no relief", r.unrelieved.x},
+                                                                            {"optimum", r.optimiser.best_row().x}};
+        for (const auto &single : r.single)
+          designs.emplace_back("optimum at " + g(single.torque) + " N m", single.run.best_row().x);
+        if (r.grid.best >= 0)
+          designs.emplace_back("grid best", r.grid.best_row().x);
+        r.check = check_designs(model, s.problem, designs, s.problem.check_torques, out);
       }
     return r;
   }

@@ -22,6 +22,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gearfem::optimise
@@ -55,6 +56,12 @@ namespace gearfem::optimise
     TorqueAggregate aggregate = TorqueAggregate::maximum;
     int positions   = 20;         ///< equally spaced over one mesh cycle (one angular pitch) from A
     int grid_points = 0;          ///< per variable, of the grid run on the same model (0: none)
+    /// Also optimise at each torque alone (same method, start and budget, same model): the
+    /// single-load optima the robust one is compared with. Needs 2 or more torques.
+    bool single_torque_optima = false;
+    /// Torques [N m] at which no relief, the optimum, the single-load optima and the grid's
+    /// best are evaluated after the optimisation (robust.csv); empty = none.
+    std::vector<double> check_torques;
 
     int n_variables() const { return per_gear ? 4 : 2; }
     std::vector<double> lower() const; ///< [m]
@@ -64,6 +71,9 @@ namespace gearfem::optimise
     std::vector<std::string> variable_names() const;
     /// Ranges and sizes; InputError naming "Optimise/Tip relief/<entry>" (exit status 2).
     void check() const;
+    /// The same variables and measure at torques `t` alone: no weights (maximum), no grid,
+    /// no single-load optima, no check torques.
+    ReliefProblem at_torques(const std::vector<double> &t) const;
   };
 
   /// STE of one design over the cycle at each torque, and its objective.
@@ -101,7 +111,11 @@ namespace gearfem::optimise
                 const ReliefProblem &problem);
     ~ReliefModel();
     /// STE cycles of design x [m] at the problem's torques; a solver failure gives ok = false.
-    ReliefResult evaluate(const std::vector<double> &x);
+    ReliefResult evaluate(const std::vector<double> &x) { return evaluate(x, problem_); }
+    /// The same at the torques, measure and aggregate of `p`, which must have the model's
+    /// variables and positions (std::invalid_argument otherwise): e.g. problem().at_torques().
+    ReliefResult evaluate(const std::vector<double> &x, const ReliefProblem &p);
+    const ReliefProblem &problem() const { return problem_; }
     const std::vector<double> &positions() const { return positions_; } ///< roll angles [rad]
     /// Mesh, assembly and factorisation time [s]: spent once, in the constructor (an
     /// evaluation never re-enters those timer sections).
@@ -132,6 +146,7 @@ namespace gearfem::optimise
   struct ReliefRun
   {
     std::string name;          ///< the method, or "grid NxN"
+    std::vector<double> torques; ///< of its evaluations (the problem's) [N m]
     std::vector<ReliefRow> history;
     int best = -1;             ///< row of the best successful evaluation (-1: none)
     double seconds = 0;
@@ -149,6 +164,33 @@ namespace gearfem::optimise
   /// grid), on the same model. Failed points are recorded, not fatal.
   ReliefRun relief_grid(ReliefModel &model, const ReliefProblem &p, int points, std::ostream *out);
 
+  /// A single-load optimum: the optimiser at one torque alone, and its optimum evaluated at
+  /// all the study's torques (objective, p-p and H1 comparable with the robust optimum's).
+  struct ReliefSingleLoad
+  {
+    double torque = 0;         ///< [N m]
+    ReliefRun run;             ///< name "<method> at T N m"
+    ReliefResult at_study;     ///< run.best_row().x at the study's torques and objective
+  };
+
+  /// One design evaluated at the check torques.
+  struct ReliefCheck
+  {
+    std::string design;        ///< "no relief", "optimum", "optimum at T N m", "grid best"
+    std::vector<double> x;     ///< [m]
+    ReliefResult result;       ///< at ReliefProblem::check_torques (objective: their maximum)
+  };
+
+  /// Optimise at each torque of p alone (ReliefProblem::at_torques), from p's start with the
+  /// same settings, on the same model. Each optimum is then evaluated at all of p's torques.
+  std::vector<ReliefSingleLoad> single_load_optima(ReliefModel &model, const ReliefProblem &p,
+                                                   const OptimiserSettings &settings, std::ostream *out);
+  /// Each named design at `torques` on the same model (one sweep each). A failed sweep is
+  /// recorded (ok = false), not fatal.
+  std::vector<ReliefCheck> check_designs(ReliefModel &model, const ReliefProblem &p,
+                                         const std::vector<std::pair<std::string, std::vector<double>>> &designs,
+                                         const std::vector<double> &torques, std::ostream *out);
+
   /// A tip-relief study: the problem, the optimiser, and what optimum.prm is made from.
   struct ReliefStudy
   {
@@ -165,15 +207,21 @@ namespace gearfem::optimise
     ReliefRow unrelieved;   ///< reference: no relief
     ReliefRun optimiser;
     ReliefRun grid;         ///< empty history when no grid was asked
+    std::vector<ReliefSingleLoad> single; ///< ReliefProblem::single_torque_optima
+    std::vector<ReliefCheck> check;       ///< at ReliefProblem::check_torques
     double setup_seconds = 0;
   };
 
-  /// Build the model, evaluate the unrelieved pair, optimise, run the grid if asked.
+  /// Build the model, evaluate the unrelieved pair, optimise, run the grid, the single-load
+  /// optima and the check at other torques if asked.
   ReliefStudyResult run_relief_study(const ReliefStudy &s, std::ostream *out);
   /// Files (atomically): optimise.csv (history of optimiser and grid), ste.csv (the cycles of
   /// no relief, the start, the optimum and the grid's best at each torque), summary.md,
-  /// optimum.prm (`gearfem solve` runs it).
+  /// optimum.prm (`gearfem solve` runs it), and robust.csv with check torques.
   void write_relief_study(const ReliefStudy &s, const ReliefStudyResult &r, const std::filesystem::path &dir);
+  /// robust.csv: `design,<variables>,torque [N m],ok,p-p [um],H1 [um],mean STE [um],sweep
+  /// time [s]`, one row per design of ReliefStudyResult::check and check torque.
+  void write_check_csv(const ReliefStudy &s, const ReliefStudyResult &r, const std::filesystem::path &file);
   /// The summary table (console and summary.md).
   void print_relief_summary(const ReliefStudy &s, const ReliefStudyResult &r, std::ostream &out);
 } // namespace gearfem::optimise

@@ -1,6 +1,8 @@
 // ParameterHandler bindings of the tip-relief problem (see relief_parameters.h).
 #include "optimise/relief_parameters.h"
 
+#include "optimise/parameters.h"
+
 #include "base/errors.h"
 #include "contact/parameters.h"
 #include "params/checked.h"
@@ -14,6 +16,7 @@
 namespace gearfem::optimise
 {
   using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
@@ -49,6 +52,15 @@ namespace gearfem::optimise
                       "Also evaluate a full-factorial grid of this many values per variable over the box on "
                       "the same model (a Harris-map grid, the check of the optimum); 0 = none. Units: none. "
                       "Allowed: 0, 2 to 50.");
+    prm.declare_entry("Single-torque optima", "false", Bool(),
+                      "Also optimise at each torque of Solve/Torques alone (same method, start and budget, on "
+                      "the same model): the single-load optima the robust optimum is compared with. Units: none. "
+                      "Allowed: false, or true with 2 or more Solve/Torques.");
+    prm.declare_entry("Check torques", "", Anything(),
+                      "After the optimisation, evaluate no relief, the optimum, the single-load optima and the "
+                      "grid's best at each of these torques on the same model (robust.csv, relief_robust.png); "
+                      "comma-separated, empty = none. Units: N m. Allowed: up to 50 torques, each > 0 and "
+                      "within the small-strain limit of Solve/Torques.");
     prm.leave_subsection();
   }
 
@@ -71,41 +83,56 @@ namespace gearfem::optimise
       p.aggregate   = prm.get("Torque aggregate") == "weighted mean" ? TorqueAggregate::weighted_mean : TorqueAggregate::maximum;
       p.weights     = params::get_doubles(prm, "Torque weights");
       p.grid_points = params::get_integer(prm, "Grid points");
+      p.single_torque_optima = params::get_bool(prm, "Single-torque optima");
+      p.check_torques        = params::get_doubles(prm, "Check torques");
       prm.leave_subsection();
       prm.leave_subsection();
     }
 
+    /// The shared Optimiser reader, with this problem's restrictions: exactly one method,
+    /// and Bound unused (the box is the problem's), so its value is not checked.
     OptimiserSettings read_optimiser(dealii::ParameterHandler &prm)
     {
-      prm.enter_subsection("Optimiser");
-      OptimiserSettings o;
-      o.max_evaluations   = params::get_integer(prm, "Max evaluations");
-      o.fd_step           = params::get_double(prm, "Finite-difference step");
-      o.xtol_rel          = params::get_double(prm, "Relative x tolerance");
-      o.ftol_rel          = params::get_double(prm, "Relative f tolerance");
-      o.iterations        = params::get_integer(prm, "Iterations");
-      o.golden_tolerance  = params::get_double(prm, "Golden-section tolerance");
-      o.line_search_steps = params::get_integer(prm, "Line-search steps");
-      const int seed      = params::get_integer(prm, "Seed");
-      require_range("Optimiser/Seed", seed, 0, 2147483647);
-      o.seed       = static_cast<unsigned int>(seed);
-      o.population = params::get_integer(prm, "Population");
-      std::vector<std::string> names;
-      const std::string text = prm.get("Methods");
-      std::stringstream methods(text);
-      for (std::string item; std::getline(methods, item, ',');)
-        {
-          const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-          if (b != std::string::npos)
-            names.push_back(item.substr(b, e - b + 1));
-        }
-      prm.leave_subsection();
-      if (names.size() != 1)
-        throw InputError("Optimiser/Methods", text.empty() ? "(empty)" : text,
-                         "one of " + method_names(), "Problem = tip relief runs one method (bobyqa or cobyla suit its FE objective)");
-      o.method = method_from_string(names[0], "Optimiser/Methods");
+      const OptimiserSection section = read_optimiser_section(prm);
+      if (section.methods.size() != 1)
+        throw InputError("Optimiser/Methods", section.methods_text.empty() ? "(empty)" : section.methods_text,
+                         "one of " + method_names(),
+                         "Problem = tip relief runs one method (bobyqa or cobyla suit its FE objective)");
+      OptimiserSettings o = section.settings;
+      o.bound             = OptimiserSettings().bound;
       o.check();
       return o;
+    }
+
+    /// Check torques within the small-strain limit that `gearfem solve` applies to
+    /// Solve/Torques (contact/parameters.cc): the same check, run on a copy of the case
+    /// with these torques, its error re-named to the Check torques entry.
+    void check_torques_strain(dealii::ParameterHandler &prm, const std::vector<double> &torques)
+    {
+      if (torques.empty())
+        return;
+      std::string list;
+      for (const double t : torques)
+        list += (list.empty() ? "" : ", ") + to_string_g(t);
+      prm.enter_subsection("Solve");
+      const std::string saved = prm.get("Torques");
+      prm.set("Torques", list);
+      prm.leave_subsection();
+      std::string error;
+      try
+        {
+          (void)contact::parse_gear_contact_input(prm);
+        }
+      catch (const InputError &e)
+        {
+          error = e.what();
+        }
+      prm.enter_subsection("Solve");
+      prm.set("Torques", saved);
+      prm.leave_subsection();
+      if (!error.empty())
+        throw InputError("Optimise/Tip relief/Check torques", list + " N m",
+                         "torques > 0 N m within the small-strain limit of the pair", error);
     }
   } // namespace
 
@@ -126,6 +153,7 @@ namespace gearfem::optimise
     s.problem.positions = sv.n_positions;
     s.problem.check();
     check_relief_geometry(s.geometry, s.problem);
+    check_torques_strain(prm, s.problem.check_torques);
     (void)post::parse_post_parameters(prm);
     s.input = input;
     // optimum.prm: the study's `gearfem solve` sections with the relief of the design.

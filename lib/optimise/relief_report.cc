@@ -3,6 +3,7 @@
 #include "base/atomic_file.h"
 #include "optimise/relief.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -34,6 +35,42 @@ namespace gearfem::optimise
              (p.weights.empty() || p.aggregate == TorqueAggregate::maximum ? "" : " (w " + g(p.weights[k]) + ")");
       return s + " N m";
     }
+
+    /// The check at other torques: p-p of each design (rows) at each check torque.
+    void print_check_table(const ReliefStudy &s, const ReliefStudyResult &r, std::ostream &out)
+    {
+      if (r.check.empty())
+        return;
+      const auto &t = s.problem.check_torques;
+      out << "\nPeak-to-peak STE [um] at the check torques (" << to_string(s.problem.measure)
+          << " objective aside), on the same model:\n\n| design | ";
+      for (const double T : t)
+        out << g(T) << " N m | ";
+      out << "worst |\n|---|";
+      for (std::size_t k = 0; k <= t.size(); ++k)
+        out << "---|";
+      out << "\n";
+      for (const auto &c : r.check)
+        {
+          out << "| " << c.design << " | ";
+          double worst = 0;
+          for (std::size_t k = 0; k < t.size(); ++k)
+            {
+              out << (c.result.ok ? g(c.result.peak_to_peak[k], 4) : std::string("–")) << " | ";
+              worst = c.result.ok ? std::max(worst, c.result.peak_to_peak[k]) : worst;
+            }
+          out << (c.result.ok ? g(worst, 4) : std::string("failed")) << " |\n";
+        }
+    }
+
+    /// Column k of a study torque in a run's results (-1: not evaluated at that torque).
+    int torque_column(const ReliefRun &run, double T)
+    {
+      for (std::size_t k = 0; k < run.torques.size(); ++k)
+        if (run.torques[k] == T)
+          return static_cast<int>(k);
+      return -1;
+    }
   } // namespace
 
   void print_relief_summary(const ReliefStudy &s, const ReliefStudyResult &r, std::ostream &out)
@@ -59,9 +96,11 @@ namespace gearfem::optimise
       const bool none = name == "no relief";
       for (const double v : engineering(row.x))
         out << (none ? std::string("0") : g(v, 4)) << " | ";
-      out << g(row.result.objective, 4) << " | ";
-      for (std::size_t k = 0; k < p.torques.size(); ++k)
-        out << g(row.result.peak_to_peak.at(k), 4) << " | " << g(row.result.harmonic.at(k), 4) << " | ";
+      out << (row.result.ok ? g(row.result.objective, 4) : std::string("–")) << " | ";
+      for (std::size_t k = 0; k < p.torques.size(); ++k) // a failed sweep: dashes, never NaN
+        out << (row.result.ok ? g(row.result.peak_to_peak.at(k), 4) + " | " + g(row.result.harmonic.at(k), 4)
+                              : std::string("– | –"))
+            << " | ";
       out << ev << " | " << t << " |\n";
     };
     row("no relief", r.unrelieved, "1", g(r.unrelieved.result.seconds, 3));
@@ -70,7 +109,44 @@ namespace gearfem::optimise
         g(r.optimiser.seconds, 3));
     if (r.grid.best >= 0)
       row("best of " + r.grid.name, r.grid.best_row(), std::to_string(r.grid.history.size()), g(r.grid.seconds, 3));
-    out << "\nOptimiser stop: " << r.optimiser.stop_reason << ".\n";
+    for (const auto &single : r.single)
+      {
+        ReliefRow at_study;
+        at_study.x      = single.run.best_row().x;
+        at_study.result = single.at_study;
+        row("optimum at " + g(single.torque) + " N m alone (" + r.optimiser.name + ")", at_study,
+            std::to_string(single.run.history.size()) + " + 1", g(single.run.seconds + single.at_study.seconds, 3));
+      }
+    out << "\nOptimiser stop: " << r.optimiser.stop_reason << ".";
+    if (!r.single.empty())
+      out << " The single-load optima were optimised at their torque alone, then evaluated at every torque "
+             "(+ 1 FE evaluation); their objective is the study's.";
+    out << "\n";
+    print_check_table(s, r, out);
+  }
+
+  void write_check_csv(const ReliefStudy &s, const ReliefStudyResult &r, const std::filesystem::path &file)
+  {
+    const auto &p = s.problem;
+    AtomicOutputFile f(file);
+    auto &o = f.stream();
+    o << "design";
+    for (const auto &n : p.variable_names())
+      o << ',' << n << (n[0] == 'C' ? " [um]" : " [mm]");
+    o << ",torque [N m],ok,p-p [um],H1 [um],mean STE [um],sweep time [s]\n";
+    for (const auto &c : r.check)
+      for (std::size_t k = 0; k < p.check_torques.size(); ++k)
+        {
+          o << c.design;
+          for (const double v : engineering(c.x))
+            o << ',' << g(c.design == "no relief" ? 0.0 : v, 10);
+          // A failed sweep: ok 0 and empty cells, never NaN.
+          const bool ok = c.result.ok;
+          o << ',' << g(p.check_torques[k]) << ',' << (ok ? 1 : 0) << ','
+            << (ok ? g(c.result.peak_to_peak[k], 10) : "") << ',' << (ok ? g(c.result.harmonic[k], 10) : "") << ','
+            << (ok ? g(c.result.mean[k], 10) : "") << ',' << g(c.result.seconds, 6) << '\n';
+        }
+    f.commit();
   }
 
   void write_relief_study(const ReliefStudy &s, const ReliefStudyResult &r, const std::filesystem::path &dir)
@@ -86,7 +162,10 @@ namespace gearfem::optimise
       for (const double T : p.torques)
         o << ",p-p at " << g(T) << " N m [um],H1 at " << g(T) << " N m [um]";
       o << ",sweep time [s],time [s]\n";
-      for (const ReliefRun *run : {&r.optimiser, &r.grid})
+      std::vector<const ReliefRun *> runs = {&r.optimiser, &r.grid};
+      for (const auto &single : r.single)
+        runs.push_back(&single.run);
+      for (const ReliefRun *run : runs)
         for (const auto &h : run->history)
           {
             o << run->name << ',' << h.evaluation;
@@ -95,9 +174,14 @@ namespace gearfem::optimise
             // A failed sweep has no objective: empty cells, never NaN.
             o << ',' << (h.result.ok ? 1 : 0) << ',' << (h.result.ok ? g(h.result.objective, 10) : "") << ','
               << g(h.best, 10);
-            for (std::size_t k = 0; k < p.torques.size(); ++k)
-              o << ',' << (h.result.ok ? g(h.result.peak_to_peak[k], 10) : "") << ','
-                << (h.result.ok ? g(h.result.harmonic[k], 10) : "");
+            // A single-load run has figures at its own torque only: the other cells empty.
+            for (const double T : p.torques)
+              {
+                const int k    = torque_column(*run, T);
+                const bool has = h.result.ok && k >= 0;
+                o << ',' << (has ? g(h.result.peak_to_peak[k], 10) : "") << ','
+                  << (has ? g(h.result.harmonic[k], 10) : "");
+              }
             o << ',' << g(h.result.seconds, 6) << ',' << g(h.seconds, 6) << '\n';
           }
       f.commit();
@@ -118,8 +202,16 @@ namespace gearfem::optimise
       put("optimum", r.optimiser.best_row());
       if (r.grid.best >= 0)
         put("grid best", r.grid.best_row());
+      for (const auto &single : r.single)
+        {
+          ReliefRow at_study;
+          at_study.result = single.at_study;
+          put("optimum at " + g(single.torque) + " N m", at_study);
+        }
       f.commit();
     }
+    if (!r.check.empty())
+      write_check_csv(s, r, dir / "robust.csv");
     {
       AtomicOutputFile f(dir / "summary.md");
       f.stream() << "# Tip-relief optimisation (gearfem optimise, Problem = tip relief)\n\n";

@@ -7,7 +7,9 @@
 #                                              no NaN, and the sinusoid row equals Table 5.2 (0.2 %)
 #   optimise_checks.sh relief GEARFEM SRC_DIR  a short tip-relief run (coarse sector, COBYLA): exit 0,
 #                                              every file written, no NaN, objective not above the
-#                                              start's, and optimum.prm accepted by `gearfem solve`
+#                                              start's, optimum.prm accepted by `gearfem solve`, and
+#                                              robust.csv (Check torques 200, 300) giving the optimum
+#                                              the optimiser's p-p at its torque (300 N m, 1e-3)
 set -uo pipefail
 mode=$1 gearfem=$2 arg=$3
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -50,10 +52,16 @@ case $mode in
   relief)
     "$gearfem" optimise "$arg/tests/regression/data/optimise/short_relief.prm" --output-dir "$work/out" > "$work/log" 2>&1 \
       || { cat "$work/log"; fail "run failed"; }
-    for f in optimise.csv ste.csv summary.md optimum.prm; do
+    for f in optimise.csv ste.csv summary.md optimum.prm robust.csv; do
       [ -s "$work/out/$f" ] || fail "$f missing"
     done
-    grep -qi "nan" "$work/out/optimise.csv" "$work/out/ste.csv" "$work/out/summary.md" && fail "NaN written"
+    grep -qi "nan" "$work/out/optimise.csv" "$work/out/ste.csv" "$work/out/summary.md" "$work/out/robust.csv" \
+      && fail "NaN written"
+    [ "$(wc -l < "$work/out/robust.csv")" -eq 5 ] || fail "robust.csv: not 2 designs x 2 torques"
+    # The optimum at 300 N m in the check (another sweep plan) against the optimiser's best.
+    best300=$(awk -F, 'NR > 1 { v = $7 } END { print v }' "$work/out/optimise.csv")
+    check300=$(awk -F, '$1 == "optimum" && $4 == 300 { print $6 }' "$work/out/robust.csv")
+    near_rel "$check300" "$best300" 1e-3 || fail "robust.csv optimum at 300 N m: $check300, optimiser $best300"
     grep -q "evaluations .*ETA" "$work/log" || fail "no progress line with i/N and ETA"
     start=$(awk -F, 'NR == 2 { print $6 }' "$work/out/optimise.csv")
     best=$(awk -F, 'NR > 1 { v = $7 } END { print v }' "$work/out/optimise.csv")
