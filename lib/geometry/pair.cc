@@ -360,8 +360,15 @@ namespace gearfem::geometry
     auto dist = [&](const ProfileSegment &s2, int j, double t) {
       const Vec2 q  = O2 + rotate(rotate(s2.curve->point(t), j * pitch2), beta); // pair frame
       Vec2       qb = rotate(q, -ang1);                                          // pinion body
-      const int  k  = static_cast<int>(std::lround(std::atan2(qb.x(), qb.y()) / pitch1));
-      qb            = rotate(qb, -k * pitch1);
+      // Into the frame of the pinion tooth whose drive flank (the x < 0 side) faces the
+      // point: theta = atan2(x, y) from that tooth's axis in (-pitch, 0]. (theta grows
+      // clockwise, so the tooth n pitches clockwise is reached by turning n pitches
+      // counter-clockwise. The former reduction turned the wrong way and to the nearest
+      // tooth axis: a gear-2 tip in a tooth space measured against a flank two pitches away
+      // gave -14 mm, a spurious root of the gap, at 4 of 20 positions of seed 003's case-2
+      // optimum.)
+      const int  k  = static_cast<int>(std::ceil(std::atan2(qb.x(), qb.y()) / pitch1));
+      qb            = rotate(qb, k * pitch1);
       double best   = std::numeric_limits<double>::infinity();
       for (int i : f1)
         {
@@ -424,7 +431,22 @@ namespace gearfem::geometry
     if (!(std::abs(f1) < 1e-10))
       throw SolverError("conjugate search did not close the gap at phi1 = " + to_string_g(phi1) +
                         " (residual " + to_string_g(f1) + " m)");
-    return b1;
+    // The gap is periodic in beta with gear 2's angular pitch, and the secant iteration can
+    // land on a root whole pitches away (seed 003's case-2 optimum: two pitches at four of
+    // twenty positions). Every root is the same contact up to the numbering of gear 2's
+    // teeth, but a sector model has only the teeth that mesh at the nominal angle: return
+    // the root nearest the nominal ratio.
+    const double nominal = phase2_ - phi1 / ratio(), pitch2 = g2_.angular_pitch();
+    const double reduced = nominal + std::remainder(b1 - nominal, pitch2);
+    if (reduced != b1)
+      {
+        const double fr = signed_gap(reduced, phi1);
+        if (!(std::abs(fr) < 1e-10))
+          throw SolverError("conjugate search: the gap closed " + to_string_g((b1 - nominal) / pitch2) +
+                            " gear-2 pitches from the nominal angle at phi1 = " + to_string_g(phi1) +
+                            " but not within half a pitch of it (residual " + to_string_g(fr) + " m)");
+      }
+    return reduced;
   }
 
   std::pair<int, double> GearPair::path_parameter(double phi1) const

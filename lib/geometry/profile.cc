@@ -279,8 +279,10 @@ namespace gearfem::geometry
               case RackSegment::Generates::root: i_root = i; break;
             }
         }
-      if (i_flank < 0 || i_root < 0)
-        throw std::logic_error("GeneratingRack without flank or root segment");
+      // (No root segment: a full-round cutter tip, whose fillets meet in the middle of the
+      // tooth space.)
+      if (i_flank < 0 || (i_root < 0 && i_fillet < 0))
+        throw std::logic_error("GeneratingRack without flank, or without both fillet and root");
     }
 
     /// Phase 2: undercut trimming of the flank and fillet (with the warning).
@@ -516,7 +518,8 @@ namespace gearfem::geometry
 
       // Coast side, root to tip.
       std::vector<ProfileSegment> coast;
-      coast.push_back({SegmentType::root, Side::coast, gc[i_root], hi[i_root], lo[i_root]});
+      if (i_root >= 0)
+        coast.push_back({SegmentType::root, Side::coast, gc[i_root], hi[i_root], lo[i_root]});
       if (i_fillet >= 0)
         coast.push_back({SegmentType::fillet, Side::coast, gc[i_fillet], hi[i_fillet], lo[i_fillet]});
       if (end_path)

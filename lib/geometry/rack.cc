@@ -18,12 +18,37 @@ namespace gearfem::geometry
   {
     Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
 
+    /// Cutter tips whose arc ends this close to u = p/2 become full-round (1e-3 m).
+    double full_round_tolerance(double half_pitch) { return 1e-3 * (2 * half_pitch / units::pi); }
+
+    /// The full-round cutter tip: the straight extension l >= 0 along the flank end tangent
+    /// d and the radius r of the arc tangent to it and to the tip line v = v_t that ends at
+    /// u = p/2 (centre (p/2, v_t + r) = P + l d + r n). False when there is none.
+    bool full_round_arc(const Vec2 &P, const Vec2 &d, const Vec2 &n, double v_t, double half_pitch, double &l,
+                        double &r)
+    {
+      const double a11 = d.x(), a12 = n.x(), a21 = d.y(), a22 = n.y() - 1.0;
+      const double b1 = half_pitch - P.x(), b2 = v_t - P.y(), det = a11 * a22 - a12 * a21;
+      if (!(std::abs(det) > 1e-12))
+        return false;
+      l = (b1 * a22 - a12 * b2) / det, r = (a11 * b2 - a21 * b1) / det;
+      if (l < 0 && l > -1e-12 * half_pitch)
+        l = 0;
+      return l >= 0 && r > 0;
+    }
+
     /// Cutter tip for a rack flank ending at P (tangent d, pointing towards the gear root):
     /// the flank is continued along its end tangent until an arc of radius rho (the cutter
     /// tip radius rho_fP m) fits tangent to it and to the tip line v = v_t (the standard
     /// construction, with the end tangent in place of the straight flank); when the flank
     /// ends too low for that, the arc tangent at P itself is used. Then the tip flat to the
     /// middle of the cutter tooth u = p/2.
+    ///
+    /// Full-round cutter tip: when the arc of radius rho ends within 1e-3 m of u = p/2
+    /// (on either side), the arc radius and the straight extension are solved so that the
+    /// arc ends exactly at p/2, and there is no tip flat. (An optimiser that presses the
+    /// cutter-tip constraint ends there; a 2e-11 m tip flat generated a 2e-8 mm root arc
+    /// that gmsh could not mesh.) The radius changes by less than 1e-3 m.
     void append_cutter_tip(std::vector<RackSegment> &segments, const Curve &flank, double v_t,
                            double half_pitch, double rho, const std::string &gear_name)
     {
@@ -36,9 +61,36 @@ namespace gearfem::geometry
                          "below the end of the rack flank (" + to_string_g(P.y() / units::mm) +
                            " mm), which must run downwards",
                          "the rack flank of " + gear_name + " cannot be closed by the cutter tip");
+      double a0 = 0;
+      if (n.y() < 1.0 - 1e-12)
+        {
+          a0 = std::atan2(-n.y(), -n.x());
+          if (a0 < 0)
+            a0 += 2 * units::pi;
+          if (!(a0 > units::pi && a0 < 1.5 * units::pi))
+            throw InputError("Rack/Control points", "end tangent of the rack flank",
+                             "a flank that ends going down and outwards (u' > 0, v' < 0)");
+        }
       // Length of the straight extension for an arc of radius rho.
       const double lambda = (v_t + rho - P.y() - rho * n.y()) / d.y();
-      if (lambda > 1e-12 * half_pitch)
+      const bool   extend = lambda > 1e-12 * half_pitch;
+      if (n.y() < 1.0 - 1e-12)
+        {
+          const double r_nominal = extend ? rho : (P.y() - v_t) / (1.0 - n.y());
+          const double c_x       = P.x() + (extend ? lambda : 0.0) * d.x() + r_nominal * n.x();
+          double       l = 0, r = 0;
+          if (std::abs(half_pitch - c_x) <= full_round_tolerance(half_pitch) &&
+              full_round_arc(P, d, n, v_t, half_pitch, l, r))
+            {
+              const Vec2 Q = P + l * d;
+              if (l > 1e-12 * half_pitch)
+                segments.push_back({std::make_shared<LineSegment>(P, Q), nullptr, RackSegment::Generates::flank});
+              segments.push_back({std::make_shared<CircularArc>(Q + r * n, r, a0, 1.5 * units::pi), nullptr,
+                                  RackSegment::Generates::fillet});
+              return; // no tip flat: the gear has no root land
+            }
+        }
+      if (extend)
         {
           const Vec2 Q = P + lambda * d;
           segments.push_back({std::make_shared<LineSegment>(P, Q), nullptr, RackSegment::Generates::flank});
@@ -47,14 +99,8 @@ namespace gearfem::geometry
       Vec2 tip_start = P;
       if (n.y() < 1.0 - 1e-12)
         {
-          const double r  = (P.y() - v_t) / (1.0 - n.y());
-          const Vec2   c  = P + r * n;
-          double       a0 = std::atan2(-n.y(), -n.x());
-          if (a0 < 0)
-            a0 += 2 * units::pi;
-          if (!(a0 > units::pi && a0 < 1.5 * units::pi))
-            throw InputError("Rack/Control points", "end tangent of the rack flank",
-                             "a flank that ends going down and outwards (u' > 0, v' < 0)");
+          const double r = (P.y() - v_t) / (1.0 - n.y());
+          const Vec2   c = P + r * n;
           if (r > 1e-12 * half_pitch)
             segments.push_back({std::make_shared<CircularArc>(c, r, a0, 1.5 * units::pi), nullptr,
                                 RackSegment::Generates::fillet});
@@ -171,12 +217,14 @@ namespace gearfem::geometry
           throw InputError("Rack/Dedendum coefficient", to_string_g(r.dedendum),
                            "a cutter tooth of positive tip width",
                            "the cutter flanks meet before the tip line");
-        const double rho = r.root_radius * m;
+        double       rho     = r.root_radius * m;
         const double rho_max = (p / 2 - u_fl(v_t)) * std::cos(a) / (1 - std::sin(a));
-        if (rho > rho_max)
+        if (rho > rho_max + full_round_tolerance(p / 2))
           throw InputError("Rack/Root radius coefficient", to_string_g(r.root_radius),
                            "<= " + to_string_g(rho_max / m) + " for this dedendum and pressure angle",
                            "the fillet arcs of one cutter tooth overlap");
+        if (std::abs(rho - rho_max) <= full_round_tolerance(p / 2))
+          rho = rho_max; // full-round cutter tip (append_cutter_tip)
         const Vec2 nf(std::cos(a), std::sin(a)); // flank normal into the cutter tooth
         // The flank runs up to the cutter space bottom. (Tooth tip rounding is applied to
         // the generated outline in ToothProfile: the envelope of a corner arc in the cutter

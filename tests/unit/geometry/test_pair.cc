@@ -249,6 +249,35 @@ TEST(Pair, BSplineFlankPair)
   EXPECT_NEAR(pair.contact_ratio(), make_pair(19, 55, m).contact_ratio(), 0.05);
 }
 
+// Seed 003's case-2 optimum (gearfem optimise, SLSQP): a B-spline flank whose recovered
+// rack presses the cutter-tip constraint, so the cutter tip is a full round (no root land on
+// the pinion; Profile.FullRoundCutterTip). Gear 2 is generated from the complementary
+// rack, so the transmission is exactly uniform (conservation of the conjugate motion):
+// the gap-closing search must give beta = beta_A - (phi1 - phi_A) z1/z2 over the whole mesh
+// cycle. It used to land two gear-2 pitches away at 4 of 20 positions (a wrong tooth
+// reduction in the gap), which put the FE sector's teeth out of mesh (STE 350-580 um).
+TEST(Pair, ConjugateSearchWholeCycleSeed003Case2Optimum)
+{
+  auto g1 = gear("Gear 1", 19, 2.5 * mm), g2 = gear("Gear 2", 55, 2.5 * mm);
+  g1.rack.kind           = RackParameters::Kind::bspline_flank;
+  g1.rack.spline_degree  = 4;
+  g1.rack.control_points = {Vec2(1.0035311649, 8.64301808927), Vec2(0.849228676792, 9.45855974839),
+                            Vec2(0.841196850787, 9.33073590815), Vec2(0.960357936752, 9.69383419948),
+                            Vec2(0.343635708986, 10.4953759103)};
+  const auto p1 = ToothProfile::generate(g1);
+  const auto p2 = ToothProfile::generate_mate(g2, p1);
+  for (const auto &s : p1.segments())
+    EXPECT_NE(s.type, SegmentType::root) << "full-round cutter tip: no root land";
+  GearPair     pair(p1, p2, PairParameters{});
+  const double phiA = pair.point("A").roll_angle, b0 = pair.conjugate_angle(phiA);
+  for (int k = 0; k <= 40; ++k)
+    {
+      const double phi1 = phiA + 2 * M_PI / 19 * k / 40;
+      EXPECT_NEAR(pair.conjugate_angle(phi1), b0 - (phi1 - phiA) * 19.0 / 55.0, 1e-9) << "position " << k;
+      EXPECT_LT(gearing_residual(pair, phi1), 1e-9) << "position " << k;
+    }
+}
+
 // Pair design checks: interference / undercut cutting the active profile, contact ratio.
 TEST(Pair, DesignChecks)
 {

@@ -387,3 +387,55 @@ TEST(Profile, TipRoundingAndTangentContinuity)
         << to_string(seg[i].type) << " -> " << to_string(seg[i + 1].type);
     }
 }
+
+// Full-round cutter tip: at the largest cutter tip radius rho_max = (p/2 - u_fl(v_t)) cos a /
+// (1 - sin a) (closed form: the arc tangent to the flank and to the tip line ends at the
+// middle of the cutter tooth) the tooth has no root land; the two fillets meet on the root
+// circle in the middle of the tooth space, tangent to it. At rho_max the fillet is still the
+// closed-form trochoid (to 1e-9 mm). Within 1e-3 m of rho_max the arc is made to end at p/2
+// (the radius moves by less than 1e-3 m, so the fillet stays within 1e-3 m of the nominal
+// trochoid); further away the root land remains.
+TEST(Profile, FullRoundCutterTip)
+{
+  for (const double z : {19.0, 40.0})
+    {
+      auto         g   = gear(int(z), 0.0);
+      const double m = g.rack.module, a = g.rack.pressure_angle, p = M_PI * m;
+      const double u_tip   = p / 4 + g.rack.dedendum * m * std::tan(a);
+      const double rho_max = (p / 2 - u_tip) * std::cos(a) / (1 - std::sin(a));
+      for (const double d_rho : {0.0, -0.5e-3 * m, 0.5e-3 * m, -0.02 * m})
+        {
+          g.rack.root_radius = (rho_max + d_rho) / m;
+          SCOPED_TRACE("z " + std::to_string(z) + ", rho* " + std::to_string(g.rack.root_radius));
+          const auto tp  = ToothProfile::generate(g);
+          const auto &sg = tp.segments();
+          const bool full = std::abs(d_rho) < 1e-3 * m;
+          int n_root = 0;
+          for (const auto &s : sg)
+            n_root += s.type == SegmentType::root;
+          EXPECT_EQ(n_root, full ? 0 : 2);
+          // Outline continuous; its ends in the middle of the tooth spaces, on the root circle.
+          for (std::size_t i = 0; i + 1 < sg.size(); ++i)
+            EXPECT_LT((sg[i].end() - sg[i + 1].start()).norm(), 1e-12) << "joint " << i;
+          const double rf = tp.radii().root;
+          EXPECT_NEAR(rf, g.reference_radius() - g.rack.dedendum * m, 1e-12);
+          EXPECT_NEAR(std::atan2(sg.front().start().y(), sg.front().start().x()), M_PI / 2 - M_PI / z, 1e-12);
+          EXPECT_NEAR(sg.front().start().norm(), rf, 1e-12);
+          if (full)
+            {
+              // The fillet starts tangent to the root circle: its normal is radial there.
+              const auto pts = tp.sample(0.01 * mm);
+              ASSERT_EQ(pts.front().type, SegmentType::fillet);
+              EXPECT_NEAR(std::abs(pts.front().normal.dot(pts.front().p.normalized())), 1.0, 1e-9);
+            }
+          double worst = 0;
+          for (const auto &q : tp.sample(0.02 * mm))
+            if (q.type == SegmentType::fillet && q.side == Side::coast)
+              worst = std::max(worst, trochoid_distance(g, q.p));
+          EXPECT_LT(worst, full && d_rho != 0.0 ? 1e-3 * m : 1e-9) << "fillet off the nominal trochoid";
+        }
+      // Beyond the tolerance the arcs of one cutter tooth overlap: a named input error.
+      g.rack.root_radius = (rho_max + 2e-3 * m) / m;
+      EXPECT_THROW(ToothProfile::generate(g), gearfem::InputError);
+    }
+}
