@@ -611,6 +611,23 @@ namespace gearfem::geometry
     return r;
   }
 
+  double ToothProfile::curvature_at(const Vec2 &p) const
+  {
+    // Tooth k stands at polar angle atan2(x, y) = -k pitch (rotate_to_tooth turns
+    // counter-clockwise): turn p back to tooth 0.
+    const double pitch = angular_pitch();
+    const Vec2   q     = rotate(p, std::round(std::atan2(p.x(), p.y()) / pitch) * pitch);
+    double best = std::numeric_limits<double>::infinity(), kappa = 0;
+    for (const auto &sg : segments_)
+      {
+        const double t = sg.curve->closest_parameter_in(q, std::min(sg.t0, sg.t1), std::max(sg.t0, sg.t1));
+        const double d = (sg.curve->point(t) - q).norm();
+        if (d < best)
+          best = d, kappa = (sg.t1 >= sg.t0 ? 1.0 : -1.0) * sg.curve->curvature(t);
+      }
+    return kappa;
+  }
+
   Vec2 ToothProfile::rotate_to_tooth(const Vec2 &p, int k) const
   {
     return rotate(p, k * angular_pitch());

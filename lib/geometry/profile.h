@@ -110,6 +110,9 @@ namespace gearfem::geometry
     std::vector<ProfilePoint> sample_gear(double max_spacing) const;
     /// Rotate a tooth-0 point to tooth k.
     Vec2 rotate_to_tooth(const Vec2 &p, int k) const;
+    /// Signed curvature (> 0 convex, as ProfilePoint::curvature) of the outline at its point
+    /// nearest to p (body frame, any tooth) [1/m].
+    double curvature_at(const Vec2 &p) const;
 
     /// Half of the tooth width (|x| of the coast side) at height y along the tooth axis
     /// (y measured from the gear centre) [m]; the narrowest value where undercut makes the

@@ -62,14 +62,22 @@ namespace gearfem::post
       const auto fit = contact::fit_ellipse(sp);
       tp.resolved    = tp.active_nodes >= min_patch_nodes && fit[0] > 0;
       tp.half_width  = tp.resolved ? fit[0] : 0.0;
-      // Hertz on the local involute radii of curvature at the peak.
+      // Hertz on the local radii of curvature at the peak: the involute's sqrt(r^2 - r_b^2),
+      // or for other profiles (B-spline flanks, closed racks) the curvature of the outline
+      // itself (a hollow flank has a negative one; the sum must be positive).
       const auto &pair  = model.pair();
       const double rb1 = pair.base_radius(1), rb2 = pair.base_radius(2);
       tp.radius_pinion  = (peak->x - P[0].centre).norm();
       tp.radius_gear    = (peak->x - P[1].centre).norm();
-      const double rho1 = tp.radius_pinion > rb1 ? std::sqrt(tp.radius_pinion * tp.radius_pinion - rb1 * rb1) : 0;
-      const double rho2 = tp.radius_gear > rb2 ? std::sqrt(tp.radius_gear * tp.radius_gear - rb2 * rb2) : 0;
-      if (rho1 > 0 && rho2 > 0)
+      double rho1 = tp.radius_pinion > rb1 ? std::sqrt(tp.radius_pinion * tp.radius_pinion - rb1 * rb1) : 0;
+      double rho2 = tp.radius_gear > rb2 ? std::sqrt(tp.radius_gear * tp.radius_gear - rb2 * rb2) : 0;
+      if (!pair.is_involute())
+        {
+          auto body = [&](int i) { return Eigen::Rotation2Dd(-P[i].angle) * (peak->x - P[i].centre); };
+          const double k1 = pair.gear(1).curvature_at(body(0)), k2 = pair.gear(2).curvature_at(body(1));
+          rho1 = k1 + k2 > 0 ? 1 / k1 : 0, rho2 = k1 + k2 > 0 ? 1 / k2 : 0;
+        }
+      if (rho1 != 0 && rho2 != 0)
         {
           const auto &mat1 = model.body(1).material(), &mat2 = model.body(2).material();
           contact::HertzCase hc;

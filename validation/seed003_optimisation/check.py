@@ -105,14 +105,37 @@ def fe(d):
             sum(float(r["root stress pinion [MPa]"]) for r in sw) / n)
 
 
+def balance_and_ste(d):
+    """Largest |T2 z1/(T1 z2) - 1| over the positions and the largest STE [um]."""
+    import csv
+    sw = list(csv.DictReader(open(os.path.join(a.out, f"fe_{d}", "sweep.csv"))))
+    return (max(abs(float(r["T2 z1/(T1 z2) [-]"]) - 1) for r in sw), max(float(r["STE [um]"]) for r in sw),
+            float(sw[0]["F_n [N]"]))
+
+
+# ISO 6336-1 single-pair stiffness c' = C_M c'_th (C_M 0.8, C_R = C_B = 1, x = 0, z 19/55):
+# 1/c'_th = 0.04723 + 0.15551/z1 + 0.25791/z2 [mm um/N]; the deflection of one pair at F_n/b.
+c_single = 0.8 / (0.04723 + 0.15551 / 19 + 0.25791 / 55)
 fi = fe("involute")
 T71 = "thesis Table 7.1 (ANSYS, b not stated)"
 c.rel("FE involute: mean contact pressure (Hertz at the FE load share)", fi[0], 241.4067, 0.05, T71, " MPa")
 c.info("FE involute: mean root stress pinion [MPa]", fi[2], 14.7187, "definition and face width not stated by the thesis")
-if not os.path.exists(os.path.join(a.out, "fe_optimum", "sweep.csv")):
-    log = open(os.path.join(a.out, "fe_optimum.log")).read().splitlines()
-    c.info("FE optimum", "failed", "-", next((l for l in log if "error" in l), "no sweep.csv"))
+ok = os.path.exists(os.path.join(a.out, "fe_optimum", "sweep.csv"))
+log = open(os.path.join(a.out, "fe_optimum.log")).read().splitlines()
+c.true("FE optimum: gearfem solve runs case 2's optimum.prm", ok,
+       "ran" if ok else next((l for l in log if "error" in l), "no sweep.csv"), "sweep.csv written",
+       "issue 15 section 5: optimum.prm runs directly in gearfem solve")
+if not ok:
     sys.exit(c.finish())
+for d in ("involute", "optimum"):
+    db, ste, fn = balance_and_ste(d)
+    # Frictionless contact of a conjugate pair: the normal passes through the pitch point, so
+    # T2/T1 = z2/z1 at every position (moment balance about both centres).
+    c.at_most(f"FE {d}: max |T2 z1/(T1 z2) - 1| over the cycle", db, 0.01,
+              "moment balance through the pitch point (law of gearing, no friction)")
+    delta = fn / 20.0 / c_single
+    c.at_most(f"FE {d}: max STE over the cycle", ste, 2 * delta,
+              f"2x the ISO 6336-1 single-pair deflection F_n/(b c') = {delta:.3f} um", " um")
 fo = fe("optimum")
 c.info("FE optimum/involute: contact pressure ratio", fo[0] / fi[0], 210.02 / 241.4067, "our case-2 optimum, not the thesis'")
 c.info("FE optimum/involute: root stress ratio", fo[2] / fi[2], 11.40 / 14.7187, "our case-2 optimum, not the thesis'")

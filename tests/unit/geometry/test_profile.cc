@@ -439,3 +439,30 @@ TEST(Profile, FullRoundCutterTip)
       EXPECT_THROW(ToothProfile::generate(g), gearfem::InputError);
     }
 }
+
+// ToothProfile::curvature_at, used for the Hertz pressure of non-involute pairs: on the
+// involute flanks of any tooth it is the closed form 1/sqrt(r^2 - r_b^2) (convex, > 0), and
+// on the Siasos trochoid fillet it is concave (< 0).
+TEST(Profile, CurvatureAtAnyToothMatchesInvolute)
+{
+  const auto   g  = gear(23, 0.1);
+  const auto   tp = ToothProfile::generate(g);
+  const double rb = tp.radii().base;
+  int n = 0;
+  for (const auto &q : tp.sample(0.3 * mm))
+    for (const int k : {0, 1, 7, 22})
+      {
+        if (q.s < 1e-9 || q.s > 1 - 1e-9)
+          continue; // a joint belongs to both of its segments
+        const Vec2 p = tp.rotate_to_tooth(q.p, k);
+        if (q.type == SegmentType::flank)
+          {
+            const double r = q.p.norm();
+            EXPECT_NEAR(tp.curvature_at(p), 1 / std::sqrt(r * r - rb * rb), 1e-6 / mm) << "r " << r / mm << " tooth " << k;
+            ++n;
+          }
+        if (q.type == SegmentType::fillet)
+          EXPECT_LT(tp.curvature_at(p), 0.0);
+      }
+  EXPECT_GT(n, 20);
+}
