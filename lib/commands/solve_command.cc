@@ -50,6 +50,11 @@ namespace gearfem::commands
           << model->body(2).triangulation().n_active_cells() << " cells, mesh " << std::setprecision(3)
           << model->mesh_seconds() << " s, set-up (mesh, assemble, factorise) " << model->setup_seconds()
           << " s" << std::endl;
+      for (int i = 1; i <= 2; ++i)
+        if (model->body(i).mesh().subdivided)
+          out << "note: gear " << i << "'s all-quad mesh comes from gmsh's subdivision fallback (Blossom "
+              << "recombination failed): smaller, less regular cells; `gearfem mesh` reports its quality"
+              << std::endl;
 
       post::SolveRunOptions opt;
       opt.output_dir = ctx.output_dir;
