@@ -136,6 +136,37 @@ for d in ("involute", "optimum"):
     delta = fn / 20.0 / c_single
     c.at_most(f"FE {d}: max STE over the cycle", ste, 2 * delta,
               f"2x the ISO 6336-1 single-pair deflection F_n/(b c') = {delta:.3f} um", " um")
+
+
+def hertz_curvature_error(d, design):
+    """Largest |1/R_Hertz / 1/R_path - 1| over the flank-contact pairs of a run: 1/R_Hertz
+    inverted from the Hertz half-width of pairs.csv (a^2 = 4 P R/(pi E*), plane stress, both
+    gears steel at gearfem's default E = 207 GPa, b = 20 mm), which post-processing takes from
+    the outlines' curvature at the FE peak; 1/R_path the optimiser's Euler-Savary 1/R along the
+    path (case2/curvature.csv) at the same pinion radius."""
+    import bisect
+    import csv
+    import math
+    cur = sorted((float(r["pinion radius [mm]"]), float(r["1/R [1/mm]"]))
+                 for r in csv.DictReader(open(os.path.join(a.out, "case2", "curvature.csv"))) if r["design"] == design)
+    xs = [x for x, _ in cur]
+    worst, n = 0.0, 0
+    for r in csv.DictReader(open(os.path.join(a.out, f"fe_{d}", "pairs.csv"))):
+        ah, rp = float(r["a_Hertz [mm]"]), float(r["radius pinion [mm]"])
+        k = bisect.bisect_left(xs, rp)
+        if ah <= 0 or r["edge contact [-]"] == "1" or k == 0 or k == len(xs):
+            continue
+        (x0, y0), (x1, y1) = cur[k - 1], cur[k]
+        ref = y0 + (y1 - y0) * (rp - x0) / (x1 - x0)
+        inv_r = 4 * float(r["F_n [N]"]) / 20.0 / (math.pi * 207e3 / 2 * ah * ah)
+        worst, n = max(worst, abs(inv_r / ref - 1)), n + 1
+    return worst if n else None
+
+
+for d in ("involute", "optimum"):
+    c.at_most(f"FE {d}: Hertz 1/R at the FE peak vs the optimiser's path 1/R (worst pair)",
+              hertz_curvature_error(d, d), 0.02,
+              "Euler-Savary along the rack-generated path (lib/optimise kinematics), an independent construction")
 fo = fe("optimum")
 c.info("FE optimum/involute: contact pressure ratio", fo[0] / fi[0], 210.02 / 241.4067, "our case-2 optimum, not the thesis'")
 c.info("FE optimum/involute: root stress ratio", fo[2] / fi[2], 11.40 / 14.7187, "our case-2 optimum, not the thesis'")
