@@ -82,6 +82,8 @@ function(gearfem_unit_test name label)
   cmake_parse_arguments(T "" "" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests/unit)
+  target_compile_definitions(${name} PRIVATE GEARFEM_TEST_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   add_test(NAME ${name} COMMAND ${name} --gtest_brief=1)
   set_tests_properties(${name} PROPERTIES LABELS "${label}"
     ENVIRONMENT "GEARFEM_SOURCE_DIR=${PROJECT_SOURCE_DIR};GEARFEM_BINARY_DIR=${PROJECT_BINARY_DIR}")

@@ -1,4 +1,5 @@
 #include "analytical/benchmark.h"
+#include "base/units.h"
 
 #include "analytical/from_geometry.h"
 #include "analytical/mesh_cycle.h"
@@ -15,7 +16,7 @@ namespace gearfem::analytical
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
 
     geometry::GearParameters gear(int z, double m, double b)
     {
@@ -23,7 +24,7 @@ namespace gearfem::analytical
       g.teeth = z;
       g.face_width = b;
       g.rack.module = m;
-      g.rack.pressure_angle = 20 * pi / 180;
+      g.rack.pressure_angle = 20 * units::deg;
       return g;
     }
 
@@ -89,7 +90,7 @@ namespace gearfem::analytical
       const geometry::GearPair p(geometry::ToothProfile::generate(gear(23, 4e-3, 70e-3)),
                                  geometry::ToothProfile::generate(gear(69, 4e-3, 70e-3)), {});
       PairModelOptions o;
-      run_case(out, "seed 001 23/69 m 4 b 70, E 205 GPa", p, o, 0.0, 70e-3, 500.0, 205e9);
+      run_case(out, "Siasos 2010 23/69 m 4 b 70, E 205 GPa", p, o, 0.0, 70e-3, 500.0, 205e9);
     }
     {
       const geometry::GearPair p(geometry::ToothProfile::generate(gear(62, 2e-3, 20e-3)),

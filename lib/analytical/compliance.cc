@@ -1,4 +1,5 @@
 #include "analytical/compliance.h"
+#include "base/units.h"
 
 #include "analytical/quadrature.h"
 #include "base/errors.h"
@@ -9,7 +10,7 @@ namespace gearfem::analytical
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
 
     void check(const ToothBeam &tooth, const ToothLoad &load)
     {

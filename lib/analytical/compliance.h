@@ -4,7 +4,7 @@
 //
 // One beam part serves both families of models, because for the same integration
 // limits they are the same integrals:
-//  - Weber/Cornell (seed 000 eq. 3.4): C_b = 12 cos^2 phi [I2 + (0.2(1+nu) + tan^2 phi/12) I1]
+//  - Weber/Cornell (Gkimisis 2019 eq. 3.4): C_b = 12 cos^2 phi [I2 + (0.2(1+nu) + tan^2 phi/12) I1]
 //  - potential energy (Yang & Lin 1987; Tian 2004; Chen & Shao 2011): 1/k_b + 1/k_s + 1/k_a
 //    with M = F cos phi (d - y) - F sin phi h, 1.2 shear factor, axial sin^2 phi.
 // They differ in the foundation (O'Donnell vs Sainsot) and the Hertz term (Weber's
@@ -43,14 +43,14 @@ namespace gearfem::analytical
 
   /// Thickness integrals I1 = int_0^d dy/t and I2 = int_0^d (y - Psi)^2/t^3 dy (both
   /// dimensionless), by adaptive quadrature up to the contact height d (the PE limit;
-  /// seed 000 integrates to Psi, which differs by the thin tip above the load line).
+  /// Gkimisis 2019 integrates to Psi, which differs by the thin tip above the load line).
   struct BeamIntegrals
   {
     double I1 = 0.0, I2 = 0.0;
   };
   BeamIntegrals beam_integrals(const ToothBeam &tooth, const ToothLoad &load);
 
-  /// Weber/Cornell dimensionless bending+shear+axial compliance (seed 000 eq. 3.4):
+  /// Weber/Cornell dimensionless bending+shear+axial compliance (Gkimisis 2019 eq. 3.4):
   /// C_b = 12 cos^2 phi [I2 + (0.2(1+nu') + tan^2 phi/12) I1] = E' b delta_b/F.
   double weber_beam_coefficient(const BeamIntegrals &I, double phi, double nu);
 
@@ -68,15 +68,15 @@ namespace gearfem::analytical
                                   const PlaneElastic &mat);
 
   /// Constant of the first O'Donnell term. Cornell (1981, eq. 11) prints 16.67/pi =
-  /// 50/(3 pi); seed 000 eq. 3.7 has 50/(2 pi). Default: Cornell (docs/analytical.md).
+  /// 50/(3 pi); Gkimisis 2019 eq. 3.7 has 50/(2 pi). Default: Cornell (docs/analytical.md).
   enum class ODonnellConstant
   {
     cornell_50_over_3pi,
     seed000_50_over_2pi
   };
 
-  /// O'Donnell (1960) foundation, in Cornell's form (seed 000 eq. 3.7, seed 004), as a
-  /// dimensionless coefficient E' b delta_f/F:
+  /// O'Donnell (1960) foundation, in Cornell's form (Gkimisis 2019 eq. 3.7; the NTUA
+  /// tooth-mass thesis), as a dimensionless coefficient E' b delta_f/F:
   ///   (1-nu^2) cos^2 phi [c X^2 + 2(1-2nu)/(1-nu) X + (4.82/pi)(1 + tan^2 phi/(2.4(1+nu)))]
   /// with X = Psi/t_f (t_f the root thickness) and nu the plane-strain-equivalent Poisson
   /// ratio (the formula is a plane-strain result; its (1-nu^2)/E is 1/E').

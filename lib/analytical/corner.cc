@@ -1,5 +1,6 @@
 // Exact rigid corner gap (see corner.h and docs/analytical.md, "Corner contact").
 #include "analytical/corner.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "base/roots.h"
@@ -11,7 +12,7 @@ namespace gearfem::analytical
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
     constexpr double inf = std::numeric_limits<double>::infinity();
 
     double inv(double a) { return std::tan(a) - a; }

@@ -1,5 +1,5 @@
 #pragma once
-// Corner contact of an external involute pair (seed 000, Gkimisis 2019, contact path
+// Corner contact of an external involute pair (Gkimisis 2019, contact path
 // segments OA and BΓ): outside the line of action A..E a tooth pair can still touch under
 // load, the tip corner of one tooth on the involute flank of the other. This file gives the
 // exact rigid gap of that contact from the involute polar coordinates: a point of the
@@ -34,7 +34,7 @@ namespace gearfem::analytical
   enum class GapFrame
   {
     /// The gear stays at its rigid conjugate angle and the pinion turns (`gearfem solve`,
-    /// seed 000's x = R_g1 (omega_1 - omega_1n)): the compression of the mesh models.
+    /// x = R_g1 (omega_1 - omega_1n) of Gkimisis 2019): the compression of the mesh models.
     pinion,
     /// The body that carries the touched flank turns (the gear for BΓ beyond E, the pinion
     /// for OA before A); for OA this is the same as `pinion`.

@@ -1,6 +1,7 @@
 #include "analytical/cycle_table.h"
+#include "base/units.h"
 
-#include "analytical/seed000.h"
+#include "analytical/ricker_load_sharing.h"
 #include "base/errors.h"
 #include "base/roots.h"
 
@@ -14,7 +15,7 @@ namespace gearfem::analytical
     if (s == "load sharing")
       return CycleLaw::load_sharing;
     if (s == "seed000 ricker")
-      return CycleLaw::seed000_ricker;
+      return CycleLaw::ricker;
     throw InputError("Analytical/Mesh cycle law", s, "load sharing | seed000 ricker");
   }
 
@@ -28,7 +29,7 @@ namespace gearfem::analytical
 
     /// Compression x [m] with sa.load(phi1, x) = F: bracket grown geometrically from the
     /// linear guess F/k_mean, then TOMS 748 to 1e-12.
-    double ricker_compression(const Seed000SemiAnalytical &sa, double phi1, double F, double k_mean)
+    double ricker_compression(const RickerSemiAnalytical &sa, double phi1, double F, double k_mean)
     {
       double lo = 0.25 * F / k_mean, hi = 4.0 * F / k_mean;
       const auto f = [&](double x) { return sa.load(phi1, x) - F; };
@@ -36,7 +37,7 @@ namespace gearfem::analytical
         lo *= 0.25;
       for (int i = 0; i < 40 && f(hi) < 0; ++i)
         hi *= 4.0;
-      return base::find_root(f, lo, hi, 1e-12, 200, "seed 000 Ricker law: load(phi1, x) = F");
+      return base::find_root(f, lo, hi, 1e-12, 200, "Ricker law (Gkimisis 2019): load(phi1, x) = F");
     }
 
     std::vector<Row> ricker_cycle(const CycleInput &in, const std::vector<MeshState> &ls, double F)
@@ -44,7 +45,7 @@ namespace gearfem::analytical
       double k_mean = 0;
       for (const auto &s : ls)
         k_mean += s.stiffness / ls.size();
-      const Seed000SemiAnalytical sa(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, k_mean, in.options,
+      const RickerSemiAnalytical sa(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, k_mean, in.options,
                                      in.ricker_widening);
       const double pitch = in.line.base_pitch / in.line.rb1;
       std::vector<Row> rows;
@@ -90,7 +91,7 @@ namespace gearfem::analytical
           throw InputError("Rating/Pinion torques", std::to_string(T), "> 0 N m");
         const double F = T / in.line.rb1;
         const auto cycle = mesh_cycle(mm, F, positions);
-        if (law == CycleLaw::seed000_ricker)
+        if (law == CycleLaw::ricker)
           all.push_back(ricker_cycle(in, cycle, F));
         else
           {
@@ -107,7 +108,7 @@ namespace gearfem::analytical
         double kmin = 1e300, kmax = 0, ksum = 0;
         for (const Row &r : all[i])
           {
-            std::vector<double> row{torques[i], r.roll_angle * 180 / M_PI, r.pairs, r.ste * 1e6, r.stiffness * 1e-6,
+            std::vector<double> row{torques[i], r.roll_angle / units::deg, r.pairs, r.ste * 1e6, r.stiffness * 1e-6,
                                     0, 0, 0};
             for (std::size_t j = 0; j < r.loads.size() && j < 3; ++j)
               row[5 + j] = r.loads[j];

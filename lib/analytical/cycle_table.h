@@ -4,13 +4,14 @@
 // in contact, the loaded STE, the secant mesh stiffness and the load of each pair. Two laws:
 //  - load_sharing: the equal-deflection load sharing of mesh_cycle.h on the pair compliance
 //    (Weber/Cornell or potential energy, with or without the corner contacts OA/BΓ);
-//  - seed000_ricker: seed 000's semi-analytical pair stiffness with Ricker-wavelet load
-//    sharing (seed000.h); its Hertz term is linearised with the mean stiffness of the
+//  - ricker: the semi-analytical pair stiffness of Gkimisis 2019 with Ricker-wavelet load
+//    sharing (ricker_load_sharing.h); its Hertz term is linearised with the mean stiffness of the
 //    load-sharing cycle at the same torque (eq. 3.30), and the STE at a position solves
 //    load(phi1, x) = F (TOMS 748).
-// The evaluation is timed, so that the speed-against-error study (issue 14) can put each
+// The evaluation is timed, so that the speed-against-error study can put each
 // analytical rung next to the FE. SI units.
 #include "analytical/tooth.h"
+#include "base/units.h"
 #include "base/table.h"
 
 #include <vector>
@@ -20,7 +21,7 @@ namespace gearfem::analytical
   enum class CycleLaw
   {
     load_sharing,  ///< mesh_cycle.h on the pair compliance
-    seed000_ricker ///< Seed000SemiAnalytical::load with Ricker load sharing
+    ricker ///< RickerSemiAnalytical::load with Ricker load sharing
   };
   CycleLaw cycle_law_from_string(const std::string &s); ///< "load sharing" | "seed000 ricker"
 
@@ -33,7 +34,7 @@ namespace gearfem::analytical
     PairLine line;
     PairModelOptions options;
     bool corner_contact = true; ///< corner contacts OA/BΓ in the load-sharing cycle
-    double ricker_widening = 2.0 * 3.14159265358979323846 / 180.0 / 1e-3; ///< c_x [rad/m]
+    double ricker_widening = 2.0 * units::pi / 180.0 / 1e-3; ///< c_x [rad/m]
   };
 
   struct CycleTable

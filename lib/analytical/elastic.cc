@@ -1,4 +1,5 @@
 #include "analytical/elastic.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -8,7 +9,7 @@ namespace gearfem::analytical
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
   }
 
   PlaneElastic plane_elastic(const Material &m, PlaneCondition c)

@@ -61,7 +61,7 @@ namespace gearfem::analytical
   /// Weber (1949) Hertz approach of one body, from the contact to a point at depth h
   /// along the load line (h = distance from the contact to the tooth centreline):
   ///   delta_i = (2 F/(pi b E_i')) [ln(2 h_i/a) - nu_i'/2]      [m]
-  /// With equal materials the pair sum is the seed formula (seed 000 eq. 3.8, seed 004):
+  /// With equal materials the pair sum is the thesis formula (Gkimisis 2019 eq. 3.8; the NTUA tooth-mass thesis):
   ///   C_H = E b delta/F = (2(1-nu^2)/pi)[ln(4 h1 h2/a^2) - nu/(1-nu)]   (plane strain).
   /// @param F normal load [N]; b face width [m]; a Hertz half-width [m].
   double weber_hertz_approach(double F, double b, double a, double h, const PlaneElastic &body);

@@ -1,7 +1,9 @@
 #include "analytical/from_geometry.h"
+#include "geometry/rim.h"
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -63,7 +65,7 @@ namespace gearfem::analytical
             t.beam.breakpoints.push_back(y_form);
         }
     t.beam.root_radius = r.root;
-    t.beam.rim_inner_radius = rim;
+    t.beam.rim_inner_radius = rim > 0 ? rim : geometry::rim_inner_radius(p);
     return t;
   }
 
@@ -88,13 +90,13 @@ namespace gearfem::analytical
     return l;
   }
 
-  iso6336::PlaneCurve fillet_curve(const geometry::ToothProfile &p)
+  analytical::PlaneCurve fillet_curve(const geometry::ToothProfile &p)
   {
     for (const auto &sg : p.segments())
       if (sg.type == geometry::SegmentType::fillet && sg.side == geometry::Side::coast)
         {
           const geometry::CurvePtr c = sg.curve;
-          iso6336::PlaneCurve pc;
+          analytical::PlaneCurve pc;
           pc.t0 = sg.t0;
           pc.t1 = sg.t1;
           pc.x = [c](double t, int k) {
@@ -107,5 +109,13 @@ namespace gearfem::analytical
         }
     throw InputError(p.parameters().name + ": the generated profile has no fillet segment "
                      "(root radius of the rack = 0?)");
+  }
+
+  PairCompliance pair_compliance(const geometry::GearPair &pair, const Material &m1, const Material &m2,
+                                 const PairModelOptions &options, double rim1, double rim2)
+  {
+    return PairCompliance(involute_tooth(pair.gear(1), rim1), involute_tooth(pair.gear(2), rim2), m1, m2,
+                          std::min(pair.gear(1).parameters().face_width, pair.gear(2).parameters().face_width),
+                          pair_line(pair), options);
   }
 } // namespace gearfem::analytical

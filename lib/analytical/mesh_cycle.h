@@ -1,8 +1,9 @@
 #pragma once
-// Quasi-static load sharing over the mesh cycle (seed 004: W_i ~ 1/C_i, equal deflection;
-// seed 000 eqs. 3.10-3.17: Hertz nonlinearity by iteration on the load). The tooth-pair
-// compliance is abstract: any model (Weber/Cornell, potential energy, FE-calibrated)
-// that gives delta/F of one pair at a contact position and load. SI units.
+// Quasi-static load sharing over the mesh cycle (the NTUA tooth-mass thesis: W_i ~ 1/C_i,
+// equal deflection; Gkimisis 2019 eqs. 3.10-3.17: Hertz nonlinearity by iteration on the
+// load). The tooth-pair compliance is abstract: any model (Weber/Cornell, potential
+// energy, FE-calibrated) that gives delta/F of one pair at a contact position and load.
+// SI units.
 #include "analytical/corner.h"
 
 #include <functional>
@@ -19,7 +20,7 @@ namespace gearfem::analytical
     double rb1 = 0;          ///< pinion base radius [m] (roll angle = (g - g_C)/rb1)
     /// Compliance delta/F [m/N] of one tooth pair in contact at g [m] under normal load F [N].
     std::function<double(double g, double F)> pair_compliance;
-    /// Optional corner contact (seed 000 OA/BΓ, corner.h): the rigid gap [m] and lever arm of
+    /// Optional corner contact (OA/BΓ of Gkimisis 2019, corner.h): the rigid gap [m] and lever arm of
     /// a pair at g outside [g_A, g_E], in compression units with the gear held and the pinion
     /// turned. Empty (the default): only the pairs on A..E carry load. With it,
     /// solve_mesh_position and mesh_cycle also count the corner pairs (the inverse of
@@ -56,7 +57,7 @@ namespace gearfem::analytical
   /// starting at the start of contact A.
   std::vector<MeshState> mesh_cycle(const MeshModel &m, double load, int n, int pitches = 1);
 
-  /// Normal load carried at compression x [m] (seed 000: F_i = K(w, x_i) x_i): each pair
+  /// Normal load carried at compression x [m] (Gkimisis 2019: F_i = K(w, x_i) x_i): each pair
   /// in contact solves F_i = x/lambda(g_i, F_i). x <= 0 gives 0 (loss of contact).
   /// With m.corner set, the pairs within one base pitch beyond A and E contribute too: a pair
   /// with gap s and lever-arm ratio k (corner.h) has the normal approach k (x - s) when x > s
@@ -65,7 +66,7 @@ namespace gearfem::analytical
   /// line of action T1/rb1 = sum k_i F_i [N] (k = 1 on the path).
   double load_at_compression(const MeshModel &m, double roll_angle, double x);
 
-  /// Seed 000 torque table T(phi1, x) = rb1 load_at_compression(phi1, x) on a grid [N m];
+  /// Torque table of Gkimisis 2019, T(phi1, x) = rb1 load_at_compression(phi1, x) on a grid [N m];
   /// rows = angles. Corner contact OA/BΓ when m.corner is set.
   std::vector<std::vector<double>> torque_table(const MeshModel &m,
                                                 const std::vector<double> &roll_angles,

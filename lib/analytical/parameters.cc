@@ -14,83 +14,6 @@ namespace gearfem::analytical
   using dealii::Patterns::List;
   using dealii::Patterns::Selection;
 
-  void declare_rating_parameters(dealii::ParameterHandler &prm)
-  {
-    prm.enter_subsection("Rating");
-    prm.declare_entry("Pinion torques", "500, 400, 300, 200", List(Double(0)),
-                      "Pinion torques to rate, one report column each. Units: N m. Allowed: > 0.");
-    prm.declare_entry("Pinion speed", "0", Double(0),
-                      "Pinion speed, for the pitch-line velocity only (the dynamic factors are "
-                      "inputs). Units: rpm.");
-    prm.declare_entry("AGMA overload factor", "1", Double(0), "K_o (AGMA 2101-D04). Units: none.");
-    prm.declare_entry("AGMA dynamic factor", "1.05", Double(0),
-                      "K_v (AGMA 2101-D04; 1.05 is seed 001's minimum for wind turbines). Units: none.");
-    prm.declare_entry("AGMA size factor", "1", Double(0), "K_s (AGMA 2101-D04). Units: none.");
-    prm.declare_entry("AGMA surface condition factor", "1", Double(0), "Z_R (AGMA 2101-D04). Units: none.");
-    prm.declare_entry("AGMA rim thickness factor", "1", Double(0),
-                      "K_B (AGMA 2101-D04; 1 for backup ratio >= 1.2). Units: none.");
-    prm.declare_entry("AGMA gear unit class", "precision",
-                      Selection("open|commercial|precision|extra precision"),
-                      "Row of the K_Hma table (AGMA 2101-D04 table 3): open gearing, commercial "
-                      "enclosed, precision enclosed (seed 001), extra precision enclosed.");
-    prm.declare_entry("AGMA load distribution factor", "0", Double(0),
-                      "K_H; 0 computes 1 + K_Hma + K_Hpf (AGMA 2101-D04 empirical method, "
-                      "K_Hmc = K_Hpm = K_He = 1). Units: none.");
-    prm.declare_entry("AGMA tool teeth", "10000", Double(10),
-                      "n_o of the AGMA 908 shaper cutter (10000 = hob). Units: none.");
-    prm.declare_entry("AGMA tool addendum modification", "0", Double(-2, 2),
-                      "x_o of the AGMA 908 tool. Units: multiples of the module.");
-    prm.declare_entry("Application factor", "1", Double(0), "K_A (ISO 6336-1). Units: none.");
-    prm.declare_entry("ISO dynamic factor", "1.05", Double(0), "K_v (ISO 6336-1, input). Units: none.");
-    prm.declare_entry("ISO face load factor", "1", Double(0),
-                      "K_Hbeta (ISO 6336-1, input); K_Fbeta = K_Hbeta^N_F. Units: none.");
-    prm.declare_entry("ISO accuracy grade", "0", Integer(0, 12),
-                      "ISO 1328-1 grade for K_Halpha, K_Falpha (ISO 6336-1 method B); 0 sets them "
-                      "to 1. Units: none.");
-    prm.declare_entry("Case hardened", "true", Bool(),
-                      "Running-in allowance y_alpha = 0.075 f_pb (case hardened) or 160/sigma_Hlim f_pb.");
-    prm.declare_entry("Contact fatigue limit", "1500", Double(0),
-                      "sigma_Hlim, for y_alpha of through-hardened steel only. Units: MPa.");
-    prm.leave_subsection();
-  }
-
-  RatingInput parse_rating_parameters(dealii::ParameterHandler &prm)
-  {
-    RatingInput in;
-    prm.enter_subsection("Rating");
-    in.torques = params::get_doubles(prm, "Pinion torques");
-    in.speed = params::get_double(prm, "Pinion speed");
-    in.K_o = params::get_double(prm, "AGMA overload factor");
-    in.K_v = params::get_double(prm, "AGMA dynamic factor");
-    in.K_s = params::get_double(prm, "AGMA size factor");
-    in.Z_R = params::get_double(prm, "AGMA surface condition factor");
-    in.K_B = params::get_double(prm, "AGMA rim thickness factor");
-    in.enclosure = agma::enclosure_from_string(prm.get("AGMA gear unit class"));
-    in.K_H = params::get_double(prm, "AGMA load distribution factor");
-    in.tool.n_o = params::get_double(prm, "AGMA tool teeth");
-    in.tool.x_o = params::get_double(prm, "AGMA tool addendum modification");
-    in.K_A = params::get_double(prm, "Application factor");
-    in.K_v_iso = params::get_double(prm, "ISO dynamic factor");
-    in.K_Hbeta = params::get_double(prm, "ISO face load factor");
-    in.accuracy_grade = params::get_integer(prm, "ISO accuracy grade");
-    in.case_hardened = params::get_bool(prm, "Case hardened");
-    in.sigma_Hlim = params::get_double(prm, "Contact fatigue limit") * 1e6;
-    prm.leave_subsection();
-    if (in.torques.empty())
-      throw InputError("Rating/Pinion torques", "(empty)", "one or more values > 0 N m");
-    for (double T : in.torques)
-      require_greater("Rating/Pinion torques", T, 0.0, "N m");
-    for (auto f : {std::pair<const char *, double>{"AGMA overload factor", in.K_o},
-                   {"AGMA dynamic factor", in.K_v}, {"AGMA size factor", in.K_s},
-                   {"AGMA surface condition factor", in.Z_R}, {"AGMA rim thickness factor", in.K_B},
-                   {"Application factor", in.K_A}, {"ISO dynamic factor", in.K_v_iso},
-                   {"ISO face load factor", in.K_Hbeta}})
-      require_range(std::string("Rating/") + f.first, f.second, 1.0, 10.0);
-    if (in.K_H != 0.0)
-      require_range("Rating/AGMA load distribution factor", in.K_H, 1.0, 10.0);
-    return in;
-  }
-
   void declare_analytical_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Analytical");
@@ -101,7 +24,7 @@ namespace gearfem::analytical
                       "Material/Plane model.");
     prm.declare_entry("ODonnell constant", "cornell", Selection("cornell|seed000"),
                       "First O'Donnell foundation constant: 50/(3 pi) (Cornell 1981, default) or "
-                      "50/(2 pi) (seed 000 eq. 3.7). See docs/analytical.md.");
+                      "50/(2 pi) (Gkimisis 2019 eq. 3.7). See docs/analytical.md.");
     prm.declare_entry("Bore diameter 1", "0", Double(0),
                       "Bore (rim inner) diameter of gear 1, for the Sainsot foundation of the "
                       "potential-energy model. Units: mm. 0: not set (required by that model).");
@@ -109,13 +32,13 @@ namespace gearfem::analytical
     prm.declare_entry("Mesh positions", "200", Integer(2, 100000),
                       "Positions over one angular pitch for the mesh-cycle output. Units: none.");
     prm.declare_entry("Corner contact", "true", dealii::Patterns::Bool(),
-                      "Mesh cycle with the corner contacts OA/BG of seed 000: outside A..E a pair "
+                      "Mesh cycle with the corner contacts OA/BG of Gkimisis 2019: outside A..E a pair "
                       "carries load once the deflection closes the rigid gap of its tip corner "
                       "(the single-pair zone narrows with load). Units: none.");
     prm.declare_entry("Mesh cycle law", "load sharing", Selection("load sharing|seed000 ricker"),
                       "Law of the mesh-cycle output: equal-deflection load sharing on the "
-                      "Stiffness model, or seed 000's semi-analytical pair stiffness with "
-                      "Ricker-wavelet load sharing (Gkimisis 2019 eqs. 3.18-3.46, its Hertz term "
+                      "Stiffness model, or the semi-analytical pair stiffness with "
+                      "Ricker-wavelet load sharing of Gkimisis 2019 (eqs. 3.18-3.46, its Hertz term "
                       "linearised with the load-sharing mean stiffness; lib/analytical/cycle_table.h).");
     prm.leave_subsection();
   }

@@ -1,9 +1,7 @@
 #pragma once
-// ParameterHandler bindings of the analytical module: the `Rating` section (load and
-// rating factors of `gearfem rate`) and the `Analytical` section (stiffness model
-// choices). Engineering units at the interface (N m, rpm, mm), SI in the structs.
+// ParameterHandler binding of the `Analytical` section (stiffness model choices of the
+// analytical mesh cycle). Engineering units at the interface, SI in the structs.
 // Compiled into gearfem_analytical_params (deal.II); the light target has no deal.II.
-#include "analytical/rating.h"
 #include "analytical/cycle_table.h"
 #include "analytical/tooth.h"
 
@@ -14,11 +12,6 @@ namespace dealii
 
 namespace gearfem::analytical
 {
-  /// Declare the `Rating` section (defaults: seed 001's choices, Siasos 2010 sec. 4.1).
-  void declare_rating_parameters(dealii::ParameterHandler &prm);
-  /// Read it; materials (E, nu) are not part of it and are left at their defaults.
-  RatingInput parse_rating_parameters(dealii::ParameterHandler &prm);
-
   /// The `Analytical` section.
   struct AnalyticalInput
   {

@@ -1,5 +1,5 @@
 #pragma once
-// One root-finding utility for the whole code (issue 12). Pure C++ and header-only Boost.Math
+// One root-finding utility for the whole code. Pure C++ and header-only Boost.Math
 // (no deal.II), so the light layer (geometry, analytical, dynamics) uses it too.
 //
 // Three bracketed solvers, one contract:

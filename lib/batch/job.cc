@@ -4,11 +4,11 @@
 #include "base/errors.h"
 #include "base/number.h"
 #include "contact/gear_contact.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "io/journal.h"
 #include "io/solve_results.h"
 #include "post/parameters.h"
-#include "post/solve_run.h"
+#include "solve/run.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
@@ -42,7 +42,7 @@ namespace gearfem::batch
     /// A journal left by a killed run of this job is resumed only if it has the job's key.
     bool journal_matches(const std::filesystem::path &dir, const std::string &key)
     {
-      const auto file = dir / post::journal_file;
+      const auto file = dir / solve::journal_file;
       if (!std::filesystem::exists(file))
         return false;
       try
@@ -137,48 +137,17 @@ namespace gearfem::batch
     return io::content_hash(design_parameters(*prm));
   }
 
-  std::string model_key(const std::string &text)
-  {
-    // ShortPRM text: "subsection X" / "  set a = b" / "end", nested by two spaces.
-    std::istringstream in(text);
-    std::vector<std::string> lines;
-    bool gap = false;
-    for (std::string line; std::getline(in, line);)
-      {
-        lines.push_back(line);
-        const auto a = line.find_first_not_of(' ');
-        if (a != std::string::npos && line.compare(a, 18, "set Micro-geometry") == 0 &&
-            line.substr(line.find('=') + 1).find("gap") != std::string::npos)
-          gap = true;
-      }
-    std::string kept, top;
-    for (const auto &line : lines)
-      {
-        if (line.rfind("subsection ", 0) == 0)
-          top = line.substr(11);
-        const bool sweep_only = top == "Solve" || top == "Post" || top == "Batch";
-        const auto a          = line.find_first_not_of(' ');
-        const bool relief     = gap && (top == "Gear 1" || top == "Gear 2") && a != std::string::npos &&
-                            line.compare(a, 14, "set Tip relief") == 0;
-        if (!sweep_only && !relief)
-          kept += line + "\n";
-        if (line == "end")
-          top.clear();
-      }
-    return io::content_hash(kept);
-  }
-
   std::string model_key(const Study &study, std::size_t i)
   {
     auto prm = design_handler(study, i);
-    return model_key(design_parameters(*prm));
+    return solve::model_key(solve::parse_gear_contact_input(*prm));
   }
 
   struct ModelCache::Impl
   {
     std::string key;
     /// The input the model was built from (its meshed pair) and the one it now serves.
-    std::unique_ptr<contact::GearContactInput> base, current;
+    std::unique_ptr<solve::GearContactInput> base, current;
     std::unique_ptr<contact::GearContactModel> model;
     std::size_t builds = 0, reuses = 0;
   };
@@ -196,7 +165,7 @@ namespace gearfem::batch
     /// The model of a job: the cached one re-targeted when the model keys match, else a
     /// new one (then cached). Without a cache, a new one owned by `own`.
     contact::GearContactModel &job_model(ModelCache *cache, const std::string &key,
-                                         std::unique_ptr<contact::GearContactInput> &in,
+                                         std::unique_ptr<solve::GearContactInput> &in,
                                          std::unique_ptr<contact::GearContactModel> &own, bool &shared)
     {
       // Without a cache the caller keeps `in`; with one, the cache takes it (the model
@@ -285,9 +254,9 @@ namespace gearfem::batch
         std::error_code ec;
         std::filesystem::remove(dir / job_record_file, ec); // a re-run replaces the old record
 
-        auto input = std::make_unique<contact::GearContactInput>(contact::parse_gear_contact_input(*prm));
-        const contact::GearContactInput &in = *input;
-        post::SolveRunOptions opt;
+        auto input = std::make_unique<solve::GearContactInput>(solve::parse_gear_contact_input(*prm));
+        const solve::GearContactInput &in = *input;
+        solve::SolveRunOptions opt;
         opt.post          = post::parse_post_parameters(*prm);
         rec.contact_ratio = in.pair->contact_ratio();
         opt.output_dir    = dir;
@@ -295,8 +264,8 @@ namespace gearfem::batch
         opt.input_name    = job_parameters_file;
         opt.resume        = journal_matches(dir, rec.key);
         std::unique_ptr<contact::GearContactModel> own;
-        auto &model = job_model(cache, model_key(text), input, own, rec.shared_model);
-        const post::SolveRunResult r = post::run_solve(model, in, opt);
+        auto &model = job_model(cache, solve::model_key(in), input, own, rec.shared_model);
+        const solve::SolveRunResult r = solve::run_solve(model, in, opt);
         if (r.failure.empty())
           rec.status = "ok";
         else

@@ -1,6 +1,6 @@
 #pragma once
 // One job of a batch: one design's sweep (torques x positions) on its own factorised
-// bodies, run with the serial chain (post::run_solve) into jobs/<design id>/:
+// bodies, run with the serial chain (solve::run_solve) into jobs/<design id>/:
 //   design.prm    the design's parameters (the study with the design's values), as read
 //   results.h5    (+ sweep.csv, pairs.csv, ...) the solve-results contract
 //   job.txt       the job record, written last and atomically: its presence with
@@ -48,13 +48,9 @@ namespace gearfem::batch
   /// key, and a readable results.h5.
   bool job_finished(const std::filesystem::path &jobs_root, const std::string &id, const std::string &key);
 
-  /// What a job's factorised model depends on, as a hash of the design's parameters
-  /// (design.prm text) without the sections that only drive the sweep or its evaluation
-  /// (Solve, Post) and, with `Contact/Micro-geometry = gap`, without the tip-relief entries
-  /// of both gears. Two designs with the same model key can share one mesh, factorisation
-  /// and flexibility cache (GearContactModel::set_micro_geometry).
-  std::string model_key(const std::string &design_parameters_text);
-  /// The model key of design `i` (throws like design_handler).
+  /// The model key of design `i` (solve::model_key of its parsed input; throws like
+  /// design_handler): two designs with the same key share one mesh, factorisation and
+  /// flexibility cache (GearContactModel::set_micro_geometry).
   std::string model_key(const Study &study, std::size_t i);
 
   /// One rank's factorised model, kept from job to job: a job whose model key equals the

@@ -2,7 +2,7 @@
 
 #include "base/errors.h"
 #include "base/number.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "params/checked.h"
 #include "post/parameters.h"
 
@@ -89,7 +89,7 @@ namespace gearfem::batch
 
     void declare_case(dealii::ParameterHandler &prm)
     {
-      contact::declare_gear_contact_input(prm);
+      solve::declare_gear_contact_input(prm);
       post::declare_post_parameters(prm);
     }
   } // namespace
@@ -265,7 +265,7 @@ namespace gearfem::batch
       try
         {
           auto prm = design_handler(study, i);
-          (void)contact::parse_gear_contact_input(*prm);
+          (void)solve::parse_gear_contact_input(*prm);
           (void)post::parse_post_parameters(*prm);
         }
       catch (const InputError &e)

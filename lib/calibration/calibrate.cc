@@ -1,4 +1,5 @@
 #include "calibration/calibrate.h"
+#include "base/units.h"
 
 #include "analytical/from_geometry.h"
 #include "base/errors.h"
@@ -12,13 +13,13 @@ namespace gearfem::calibration
 {
   namespace
   {
-    const double pi = 3.14159265358979323846;
+    using units::pi;
   }
 
-  std::vector<an::SteSample> read_fe_samples(const std::vector<std::filesystem::path> &files,
+  std::vector<SteSample> read_fe_samples(const std::vector<std::filesystem::path> &files,
                                              const std::string &hash, const std::string &entry)
   {
-    std::vector<an::SteSample> samples;
+    std::vector<SteSample> samples;
     for (const auto &file : files)
       {
         io::SolveResults res;
@@ -38,13 +39,13 @@ namespace gearfem::calibration
         const auto T = res.sweep.column("torque"), phi = res.sweep.column("roll angle"),
                    ste = res.sweep.column("STE");
         for (std::size_t i = 0; i < T.size(); ++i)
-          samples.push_back({T[i], phi[i] * pi / 180, ste[i] * 1e-6});
+          samples.push_back({T[i], phi[i] * units::deg, ste[i] * 1e-6});
       }
     return samples;
   }
 
   Result calibrate(const an::PairCompliance &pc, const geometry::GearPair &pair,
-                   const std::vector<an::SteSample> &samples, const Options &options)
+                   const std::vector<SteSample> &samples, const Options &options)
   {
     Result r;
     for (const auto &s : samples)
@@ -53,27 +54,27 @@ namespace gearfem::calibration
       throw InputError("Calibration/Results files", "(no FE positions)", "at least one solved position");
     r.plain.corner        = options.start.corner;
     r.plain.corner_radius = options.start.corner_radius;
-    r.before = an::ste_errors(pc, r.plain, samples);
-    r.fit    = an::fit_factors(pc, samples, options.start, options.mask);
-    r.after  = an::ste_errors(pc, r.fit.factors, samples);
+    r.before = ste_errors(pc, r.plain, samples);
+    r.fit    = fit_factors(pc, samples, options.start, options.mask);
+    r.after  = ste_errors(pc, r.fit.factors, samples);
     // Cross-validation: fit without one torque, test on it.
     if (r.torques.size() >= 2)
       for (const double T : r.torques)
         {
-          std::vector<an::SteSample> train, test;
+          std::vector<SteSample> train, test;
           for (const auto &s : samples)
             (s.torque == T ? test : train).push_back(s);
-          const auto f = an::fit_factors(pc, train, options.start, options.mask);
-          r.held_out.emplace_back(T, an::ste_errors(pc, f.factors, test).front());
+          const auto f = fit_factors(pc, train, options.start, options.mask);
+          r.held_out.emplace_back(T, ste_errors(pc, f.factors, test).front());
           r.held_out_factors.emplace(T, f.factors);
         }
     const auto t0 = std::chrono::steady_clock::now();
-    make_tables(an::CalibratedMesh(pc, r.fit.factors), pc, pair, *r.torques.rbegin(), options.grid, r);
+    make_tables(CalibratedMesh(pc, r.fit.factors), pc, pair, *r.torques.rbegin(), options.grid, r);
     r.table_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
   }
 
-  void make_tables(const an::CalibratedMesh &m, const an::PairCompliance &pc, const geometry::GearPair &pair,
+  void make_tables(const CalibratedMesh &m, const an::PairCompliance &pc, const geometry::GearPair &pair,
                    double max_fe_torque, const TableGrid &grid, Result &r)
   {
     const double rb1    = m.base_radius();
@@ -112,7 +113,7 @@ namespace gearfem::calibration
       {
         // Two-sided: reverse flank below -b, the gap [-b, 0], the drive flank above 0.
         tt.backlash      = grid.backlash;
-        r.reverse_offset = an::reverse_offset(an::involute_tooth(pair.gear(1)), pc.line(), tt.backlash);
+        r.reverse_offset = reverse_offset(an::involute_tooth(pair.gear(1)), pc.line(), tt.backlash);
         for (int j = grid.n_load - 1; j >= 0; --j)
           tt.second.push_back(-tt.backlash - drive[j]);
         if (tt.backlash > 0)
@@ -133,7 +134,7 @@ namespace gearfem::calibration
         et.values.push_back(kt.second[j] / kt.value(i, j)); // STE = F / k
   }
 
-  Table comparison_table(const Result &r, const an::PairCompliance &pc, const std::vector<an::SteSample> &samples)
+  Table comparison_table(const Result &r, const an::PairCompliance &pc, const std::vector<SteSample> &samples)
   {
     Table cmp;
     const bool cv = !r.held_out_factors.empty();
@@ -143,15 +144,15 @@ namespace gearfem::calibration
       cmp.add_column(n, "um");
     if (cv)
       cmp.add_column("STE held out", "um");
-    const an::CalibratedMesh m0(pc, r.plain), m1(pc, r.fit.factors);
-    std::map<double, an::CalibratedMesh> mcv;
+    const CalibratedMesh m0(pc, r.plain), m1(pc, r.fit.factors);
+    std::map<double, CalibratedMesh> mcv;
     for (const auto &[T, f] : r.held_out_factors)
-      mcv.emplace(T, an::CalibratedMesh(pc, f));
+      mcv.emplace(T, CalibratedMesh(pc, f));
     const double rb1 = m1.base_radius();
     for (const auto &s : samples)
       {
         const double F = s.torque / rb1;
-        std::vector<double> row = {s.torque, s.roll_angle * 180 / pi, s.ste * 1e6, m0.ste(s.roll_angle, F) * 1e6,
+        std::vector<double> row = {s.torque, s.roll_angle / units::deg, s.ste * 1e6, m0.ste(s.roll_angle, F) * 1e6,
                                    m1.ste(s.roll_angle, F) * 1e6};
         if (cv)
           row.push_back(mcv.at(s.torque).ste(s.roll_angle, F) * 1e6);
@@ -162,14 +163,14 @@ namespace gearfem::calibration
 
   Table ste_table(const Result &r, const an::PairCompliance &pc)
   {
-    const an::CalibratedMesh m(pc, r.fit.factors);
+    const CalibratedMesh m(pc, r.fit.factors);
     Table st;
     st.add_column("roll angle", "deg");
     st.add_column("torque", "N m");
     st.add_column("STE", "um");
     for (const double th : r.stiffness.theta)
       for (const double T : r.torques)
-        st.add_row({th * 180 / pi, T, m.ste(th, T / m.base_radius()) * 1e6});
+        st.add_row({th / units::deg, T, m.ste(th, T / m.base_radius()) * 1e6});
     return st;
   }
 
@@ -220,5 +221,19 @@ namespace gearfem::calibration
     else
       rep << ".\n";
     return rep.str();
+  }
+
+  CycleTiming time_cycle(const CalibratedMesh &m, const an::PairCompliance &pc, double torque, int positions)
+  {
+    const auto &L  = pc.line();
+    const double F = torque / L.rb1;
+    double sum     = 0;
+    const auto t0  = std::chrono::steady_clock::now();
+    for (int i = 0; i < positions; ++i)
+      sum += m.ste((L.g_A - L.g_C + i * L.base_pitch / positions) / L.rb1, F);
+    CycleTiming c;
+    c.seconds  = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    c.mean_ste = sum / positions;
+    return c;
   }
 } // namespace gearfem::calibration

@@ -7,7 +7,7 @@
 #include "batch/run.h"
 #include "batch/study.h"
 #include "commands/command.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "post/parameters.h"
 
 #include <deal.II/base/multithread_info.h>
@@ -24,7 +24,7 @@ namespace gearfem::commands
   {
     void declare(dealii::ParameterHandler &prm)
     {
-      contact::declare_gear_contact_input(prm);
+      solve::declare_gear_contact_input(prm);
       post::declare_post_parameters(prm);
       batch::declare_batch_parameters(prm);
     }

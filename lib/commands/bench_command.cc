@@ -79,7 +79,7 @@ namespace gearfem::commands
             throw InputError("bench solve input file", "(none)", "a .prm file",
                              "usage: gearfem bench solve inputs/demo.prm");
           if (!ctx.validate_only)
-            post::benchmark(ctx.input_file, *ctx.out);
+            solve::benchmark(ctx.input_file, *ctx.out);
           return;
         }
 #endif

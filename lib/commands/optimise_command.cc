@@ -1,4 +1,4 @@
-// `gearfem optimise study.prm`: seed 003 (Koronaios 2021) B-spline tooth-profile
+// `gearfem optimise study.prm`: Koronaios 2021 B-spline tooth-profile
 // optimisation for minimum and constant equivalent curvature. Parse, call lib/optimise,
 // write.
 #include "commands/command.h"
@@ -42,7 +42,7 @@ namespace gearfem::commands
         return run_relief(prm, ctx);
       std::ostream           &out   = *ctx.out;
       const optimise::Study   study = optimise::parse_study_parameters(prm);
-      out << "optimise: seed 003 " << optimise::to_string(study.kind) << ", " << study.runs.size()
+      out << "optimise: Koronaios 2021 " << optimise::to_string(study.kind) << ", " << study.runs.size()
           << " method(s), start point feasible\n";
       if (ctx.validate_only)
         return;
@@ -59,9 +59,9 @@ namespace gearfem::commands
   {
     Command c;
     c.name    = "optimise";
-    c.summary = "Profile optimisation: seed 003 B-spline tooth (min. curvature) or tip relief for min. STE (FE in the loop)";
+    c.summary = "Profile optimisation: Koronaios 2021 B-spline tooth (min. curvature) or tip relief for min. STE (FE in the loop)";
     c.description =
-      "Seed 003 (Koronaios 2021): the pinion rack (case 1) or pinion flank (case 2) as a\n"
+      "Koronaios 2021: the pinion rack (case 1) or pinion flank (case 2) as a\n"
       "degree-4 B-spline, equivalent curvature 1/R along the path of contact, objectives\n"
       "max + mean + std of |1/R| (case 1) or 2.5 int (1/R)^2 dx + std + 0.1/eps (case 2), under\n"
       "named constraints (flank decreasing in position 2, no flank overlap, eps >= minimum,\n"

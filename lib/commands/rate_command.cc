@@ -5,7 +5,8 @@
 #include "analytical/from_geometry.h"
 #include "analytical/cycle_table.h"
 #include "analytical/parameters.h"
-#include "analytical/rating.h"
+#include "rating/parameters.h"
+#include "rating/rating.h"
 #include "base/errors.h"
 #include "base/table.h"
 #include "commands/command.h"
@@ -27,7 +28,7 @@ namespace gearfem::commands
     {
       geometry::declare_geometry_parameters(prm);
       geometry::declare_material_parameters(prm);
-      an::declare_rating_parameters(prm);
+      rating::declare_rating_parameters(prm);
       an::declare_analytical_parameters(prm);
     }
 
@@ -36,7 +37,7 @@ namespace gearfem::commands
       std::ostream &out = *ctx.out;
       const geometry::GeometryInput gi = geometry::parse_geometry_parameters(prm);
       const geometry::PairMaterial pm = geometry::parse_material_parameters(prm);
-      an::RatingInput ri = an::parse_rating_parameters(prm);
+      rating::RatingInput ri = rating::parse_rating_parameters(prm);
       const an::AnalyticalInput ai = an::parse_analytical_parameters(prm);
       ri.E1 = pm.gear1.youngs_modulus, ri.nu1 = pm.gear1.poisson_ratio;
       ri.E2 = pm.gear2.youngs_modulus, ri.nu2 = pm.gear2.poisson_ratio;
@@ -49,7 +50,7 @@ namespace gearfem::commands
         }
 
       const auto t_rate            = std::chrono::steady_clock::now();
-      const an::RatingReport rep   = an::rate(pair, ri);
+      const rating::RatingReport rep   = rating::rate(pair, ri);
       const double rating_seconds  = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_rate).count();
       rep.write_markdown(ctx.output_dir / "rating.md",
                          "Rating of the " + std::to_string(gi.gear1.teeth) + "/" +
@@ -70,7 +71,7 @@ namespace gearfem::commands
       for (std::size_t i = 0; i < ct.torques.size(); ++i)
         out << "T = " << ct.torques[i] << " N m: mesh stiffness " << std::setprecision(4) << ct.k_min[i] * 1e-6
             << " .. " << ct.k_max[i] * 1e-6 << " N/um (mean " << ct.k_mean[i] * 1e-6 << ")\n";
-      out << "mesh cycle (" << (ai.law == an::CycleLaw::seed000_ricker ? "seed000 ricker" : "load sharing")
+      out << "mesh cycle (" << (ai.law == an::CycleLaw::ricker ? "seed000 ricker" : "load sharing")
           << "): " << ai.positions << " positions x " << ct.torques.size() << " torques in "
           << std::setprecision(3) << ct.seconds * 1e3 << " ms\n";
       ct.table.write_csv(ctx.output_dir / "mesh_cycle.csv");

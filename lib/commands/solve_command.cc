@@ -1,16 +1,16 @@
 // `gearfem solve case.prm`: loaded static contact of the pair over the mesh positions and
-// torques of the `Solve` section (the library call post::run_solve). Writes sweep.csv,
+// torques of the `Solve` section (the library call solve::run_solve). Writes sweep.csv,
 // pairs.csv, pressure.csv, line_of_action.csv, results.h5 (docs/output-format.md), VTU/PVD
 // files of the deformed pair and the PNG plots (scripts/plot_solve.py). `--resume`
 // continues a killed run from its journal.
 #include "base/errors.h"
 #include "base/memory.h"
 #include "commands/command.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "io/journal.h"
-#include "post/error_estimate.h"
+#include "solve/error_estimate.h"
 #include "post/parameters.h"
-#include "post/solve_run.h"
+#include "solve/run.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -24,14 +24,14 @@ namespace gearfem::commands
   {
     void declare(dealii::ParameterHandler &prm)
     {
-      contact::declare_gear_contact_input(prm);
+      solve::declare_gear_contact_input(prm);
       post::declare_post_parameters(prm);
     }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
       std::ostream &out = *ctx.out;
-      const contact::GearContactInput in = contact::parse_gear_contact_input(prm);
+      const solve::GearContactInput in = solve::parse_gear_contact_input(prm);
       const post::PostOptions post_options = post::parse_post_parameters(prm);
       const auto &pair = *in.pair;
       out << "solve: z " << pair.gear(1).teeth() << "/" << pair.gear(2).teeth() << ", a "
@@ -56,7 +56,7 @@ namespace gearfem::commands
               << "recombination failed): smaller, less regular cells; `gearfem mesh` reports its quality"
               << std::endl;
 
-      post::SolveRunOptions opt;
+      solve::SolveRunOptions opt;
       opt.output_dir = ctx.output_dir;
       opt.input_name = ctx.input_file.filename().string();
       std::ostringstream content;
@@ -65,14 +65,14 @@ namespace gearfem::commands
       opt.resume     = ctx.resume;
       opt.out        = &out;
       opt.post       = post_options;
-      const post::SolveRunResult r = post::run_solve(*model, in, opt);
+      const solve::SolveRunResult r = solve::run_solve(*model, in, opt);
       if (in.solve.plots && r.results.sweep.n_rows() > 0)
         run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
       if (!r.failure.empty())
         throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
                           " completed positions are saved in " + ctx.output_dir.string() +
                           " (their journal stays: with the input unchanged, --resume retries from the failed position)");
-      out << "\n" << post::summary_table(r, pair, in.solve.torques) << "time: contact "
+      out << "\n" << solve::summary_table(r, pair, in.solve.torques) << "time: contact "
           << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
           << r.seconds.at("output") << " s\n";
       if (ctx.outcome)
@@ -91,18 +91,18 @@ namespace gearfem::commands
         }
       if (in.solve.error_estimate)
         {
-          post::ErrorEstimateOptions eo;
+          solve::ErrorEstimateOptions eo;
           eo.post = post_options;
           eo.out  = &out;
-          out << "\nerror estimate: " << post::error_sample_positions(pair).size() << " sample positions x "
+          out << "\nerror estimate: " << solve::error_sample_positions(pair).size() << " sample positions x "
               << in.solve.torques.size() << " torques on two mesh levels (Solve/Error estimate)" << std::endl;
-          const post::ErrorEstimate e = post::estimate_error(*model, in, eo);
+          const solve::ErrorEstimate e = solve::estimate_error(*model, in, eo);
           const double sweep = r.seconds.at("contact") + r.seconds.at("post") + r.seconds.at("output");
-          out << "\n" << post::error_estimate_table(e) << "cost of the estimate " << e.seconds()
+          out << "\n" << solve::error_estimate_table(e) << "cost of the estimate " << e.seconds()
               << " s against the run's set-up " << model->setup_seconds() << " s + sweep " << sweep << " s\n";
           if (ctx.outcome)
             ctx.outcome->record_members.emplace_back(
-              "error_estimate", post::error_estimate_json(e, {{"run_setup_seconds", model->setup_seconds()},
+              "error_estimate", solve::error_estimate_json(e, {{"run_setup_seconds", model->setup_seconds()},
                                                               {"run_sweep_seconds", sweep}}));
         }
       int n_unresolved = 0;
@@ -138,7 +138,7 @@ namespace gearfem::commands
                     "Sample runs:\n"
                     "  gearfem solve inputs/demo.prm\n"
                     "  gearfem solve inputs/demo.prm --resume\n"
-                    "  gearfem solve inputs/parker_ste.prm --output-dir results/parker\n";
+                    "  gearfem solve validation/parker_ste/parker_ste.prm --output-dir results/parker\n";
     c.declare = declare;
     c.run     = run;
     return c;

@@ -1,5 +1,6 @@
 // GearContactModel: the two gear bodies and the per-position contact solves.
 #include "contact/gear_contact.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "contact/hertz.h"
@@ -15,7 +16,7 @@ namespace gearfem::contact
   namespace
   {
     using Scope = dealii::TimerOutput::Scope;
-    const double pi = 3.14159265358979323846;
+    using units::pi;
 
     std::set<unsigned int> surface_ids(const std::vector<int> &teeth, bool with_fillet)
     {
@@ -56,10 +57,18 @@ namespace gearfem::contact
     return phi;
   }
 
+  void check_contact_mesh(const mesh::GearMeshParameters &mp)
+  {
+    if (mp.model == mesh::GearMeshParameters::Model::sector && mp.sector_teeth < 3)
+      throw InputError("Mesh/Sector teeth", std::to_string(mp.sector_teeth),
+                       ">= 3 for contact (teeth -1, 0, 1 share the mesh cycle)");
+  }
+
   GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mp,
                            const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
   {
     using Optional = std::optional<Scope>;
+    check_contact_mesh(mp);
     const auto &tooth = pair.gear(i);
     mesh::MeshData m;
     {
@@ -88,9 +97,6 @@ namespace gearfem::contact
       }
     g.body->assemble_and_factorize();
     g.fine_teeth = mesh::fine_teeth(mp, tooth.teeth());
-    if (mp.model == mesh::GearMeshParameters::Model::sector && mp.sector_teeth < 3)
-      throw InputError("Mesh/Sector teeth", std::to_string(mp.sector_teeth),
-                       ">= 3 for contact (teeth -1, 0, 1 share the mesh cycle)");
     const double m_n = tooth.parameters().rack.module;
     g.contact_size   = mesh::contact_size(mp, m_n) / std::pow(2.0, fo_refinements(fe, mp));
     return g;
@@ -243,7 +249,7 @@ namespace gearfem::contact
       }
     catch (const SolverError &e)
       {
-        throw SolverError("position phi1 = " + to_string_g(phi1 * 180 / pi) + " deg, torque " +
+        throw SolverError("position phi1 = " + to_string_g(phi1 / units::deg) + " deg, torque " +
                           to_string_g(torque) + " N m: " + e.what());
       }
   }

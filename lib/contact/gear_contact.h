@@ -47,6 +47,10 @@ namespace gearfem::contact
     std::vector<int> fine_teeth; ///< body-frame tooth indices
     double contact_size = 0;     ///< element size on the drive flanks after refinement [m]
   };
+  /// The mesh requirements of a contact model that need no mesh (InputError naming the
+  /// entry): a sector has at least 3 teeth, so that teeth -1, 0 and 1 share the mesh cycle.
+  /// Checked when the input is parsed (solve/input.h) and again before a body is meshed.
+  void check_contact_mesh(const mesh::GearMeshParameters &mesh);
 
   /// Mesh gear i (1 or 2) of `pair`, build, constrain, assemble and factorise its body.
   /// With a timer, the phases are its sections "mesh" and "assemble and factorise".

@@ -1,5 +1,6 @@
 // The Hertz two-disc case: graded disc meshes, translation drive, comparison.
 #include "contact/hertz.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "mesh/domain.h"
@@ -13,7 +14,7 @@ namespace gearfem::contact
 {
   namespace
   {
-    const double pi = 3.14159265358979323846;
+    using units::pi;
 
     /// Disc of radius R about the origin with a bore R/4 (id 1, clamped); the outline is
     /// split so that the arc |theta - theta_c| < half_angle has size h_fine (id 5), the rest

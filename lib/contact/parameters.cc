@@ -1,12 +1,9 @@
-// `Contact` and `Solve` sections.
+// The `Contact` section.
 #include "contact/parameters.h"
 
 #include "base/errors.h"
 #include "base/number.h"
 #include "params/checked.h"
-#include "fem/parameters.h"
-#include "geometry/parameters.h"
-#include "mesh/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -16,15 +13,6 @@
 
 namespace gearfem::contact
 {
-  namespace
-  {
-    const double pi = 3.14159265358979323846;
-    std::vector<double> doubles(const std::string &entry, const std::string &text)
-    {
-      return parse_double_list(entry, text);
-    }
-  } // namespace
-
   void declare_contact_parameters(dealii::ParameterHandler &prm)
   {
     using namespace dealii::Patterns;
@@ -100,195 +88,5 @@ namespace gearfem::contact
                        "friction is not implemented in this version");
     o.validate();
     return o;
-  }
-
-  void declare_solve_parameters(dealii::ParameterHandler &prm)
-  {
-    using namespace dealii::Patterns;
-    prm.enter_subsection("Solve");
-    prm.declare_entry("Positions", "cycle", Selection("cycle|named|list"),
-                      "cycle: N positions over the given pitches; named: the points of the line "
-                      "of action; list: explicit roll angles. Units: none.");
-    prm.declare_entry("Number of positions", "40", Integer(), "N for `cycle`. Units: none. Allowed: >= 1.");
-    prm.declare_entry("Pitches", "1", Double(), "Angular pitches covered by `cycle`. Units: none. Allowed: > 0.");
-    prm.declare_entry("Start", "A", Anything(),
-                      "First roll angle of `cycle`: A (start of contact) or a number. Units: deg "
-                      "(pinion roll angle, 0 at the pitch point C).");
-    prm.declare_entry("Named positions", "A, B, C, D, E", MultipleSelection("A|B|C|D|E"),
-                      "Points for `named`. Units: none.");
-    prm.declare_entry("Roll angles", "", Anything(),
-                      "Comma-separated pinion roll angles for `list`. Units: deg (0 at C).");
-    prm.declare_entry("Torques", "200", Anything(),
-                      "Comma-separated pinion torques, one sweep each. Units: N m. Allowed: > 0.");
-    prm.declare_entry("VTU", "named", Selection("none|named|all"),
-                      "Deformed-pair VTU files: none, at B/C/D (named), or every position. Units: none.");
-    prm.declare_entry("VTU displacement scale", "1", Double(),
-                      "Magnification of the displacement in the VTU files. Units: none. Allowed: > 0.");
-    prm.declare_entry("Plots", "true", Bool(), "Write the PNG plots (needs /usr/bin/python3 with matplotlib).");
-    prm.declare_entry("Error estimate", "false", Bool(),
-                      "After the sweep, re-solve three sample positions at each torque (mid single-pair "
-                      "zone (B+D)/2, mid double-pair zone (A+B)/2, transition D) on a model whose fine mesh "
-                      "sizes (h_contact, h_fillet, h_coast, h_corner) are halved, and report the estimated "
-                      "discretisation error of STE, root stress and p_max (Richardson, order 2) in the "
-                      "summary and run.json (docs/output-format.md). Costs one more set-up on the finer "
-                      "mesh and 6 solves per torque. Units: none.");
-    prm.leave_subsection();
-  }
-
-  SolveParameters parse_solve_parameters(dealii::ParameterHandler &prm)
-  {
-    SolveParameters p;
-    prm.enter_subsection("Solve");
-    const std::string pos = prm.get("Positions");
-    p.positions   = pos == "cycle" ? SolveParameters::Positions::cycle :
-                    pos == "named" ? SolveParameters::Positions::named : SolveParameters::Positions::list;
-    p.n_positions = params::get_integer(prm, "Number of positions");
-    p.pitches     = params::get_double(prm, "Pitches");
-    const std::string start = prm.get("Start");
-    if (start == "A")
-      p.start_at_A = true;
-    else
-      {
-        const auto v = doubles("Solve/Start", start);
-        if (v.size() != 1)
-          throw InputError("Solve/Start", start, "A or one roll angle in deg");
-        p.start_at_A = false;
-        p.start      = v[0] * pi / 180;
-      }
-    p.names = dealii::Utilities::split_string_list(prm.get("Named positions"), ',');
-    for (const double a : doubles("Solve/Roll angles", prm.get("Roll angles")))
-      p.roll_angles.push_back(a * pi / 180);
-    p.torques = doubles("Solve/Torques", prm.get("Torques"));
-    const std::string vtu = prm.get("VTU");
-    p.vtu       = vtu == "none" ? SolveParameters::Vtu::none :
-                  vtu == "all" ? SolveParameters::Vtu::all : SolveParameters::Vtu::named;
-    p.vtu_scale = params::get_double(prm, "VTU displacement scale");
-    p.plots     = params::get_bool(prm, "Plots");
-    p.error_estimate = params::get_bool(prm, "Error estimate");
-    prm.leave_subsection();
-
-    if (p.positions == SolveParameters::Positions::cycle && p.n_positions < 1)
-      throw InputError("Solve/Number of positions", std::to_string(p.n_positions), ">= 1");
-    require_greater("Solve/Pitches", p.pitches, 0.0, "-");
-    if (p.positions == SolveParameters::Positions::list && p.roll_angles.empty())
-      throw InputError("Solve/Roll angles", "(empty)", "at least one roll angle when Positions = list");
-    if (p.positions == SolveParameters::Positions::named && p.names.empty())
-      throw InputError("Solve/Named positions", "(empty)", "at least one of A, B, C, D, E");
-    if (p.torques.empty())
-      throw InputError("Solve/Torques", "(empty)", "at least one torque > 0 N m");
-    for (const double t : p.torques)
-      if (!(t > 0))
-        throw InputError("Solve/Torques", to_string_g(t), "> 0 N m");
-    require_greater("Solve/VTU displacement scale", p.vtu_scale, 0.0, "-");
-    return p;
-  }
-
-  namespace
-  {
-  void check_small_strain(const geometry::GearPair &pair, const geometry::PairMaterial &pm,
-                          const std::vector<double> &torques)
-  {
-    // Line-contact Hertz estimate at the pitch point C with all the torque on one pair
-    // (Johnson 1985, eq. 4.45): p0 = sqrt(w E* / (pi R*)), w = F_n / b, F_n = T / r_b1,
-    // 1/E* = 1/E'_1 + 1/E'_2 (E' of the plane model), 1/R* = 1/rho_1 + 1/rho_2 at C.
-    // The contact strain is of the order p0 / E*; the solver is linear elastic with small
-    // strains and small rotations, so a torque for which p0 / E* exceeds 5 % (p0 ~ 5 GPa
-    // for steel, several times any yield stress) is refused, stating the largest torque.
-    const double limit = 0.05;
-    const double E1 = pm.gear1.effective_modulus(pm.plane_strain);
-    const double E2 = pm.gear2.effective_modulus(pm.plane_strain);
-    const double Es = 1.0 / (1.0 / E1 + 1.0 / E2);
-    const double b  = std::min(pair.gear(1).parameters().face_width, pair.gear(2).parameters().face_width);
-    const double curvature = pair.equivalent_curvature(0.0); // 1/R* at C [1/m]
-    for (const double T : torques)
-      {
-        const double w  = T / pair.base_radius(1) / b;
-        const double p0 = std::sqrt(w * Es * curvature / pi);
-        if (!(p0 / Es <= limit))
-          {
-            const double T_max = T * (limit * Es / p0) * (limit * Es / p0);
-            throw InputError("Solve/Torques", to_string_g(T) + " N m",
-                             "<= " + to_string_g(T_max) + " N m for this pair and material",
-                             "The estimated Hertz pressure at the pitch point is p0 = " +
-                               to_string_g(p0 / 1e6) + " MPa, p0/E* = " + to_string_g(100 * p0 / Es) +
-                               " %: beyond the small-strain range of the linear-elastic contact "
-                               "model (limit p0/E* <= 5 %)");
-          }
-      }
-  }
-  } // namespace
-
-  void declare_gear_contact_input(dealii::ParameterHandler &prm)
-  {
-    geometry::declare_geometry_parameters(prm);
-    geometry::declare_material_parameters(prm);
-    mesh::declare_mesh_parameters(prm);
-    fem::declare_fe_parameters(prm);
-    declare_contact_parameters(prm);
-    declare_solve_parameters(prm);
-  }
-
-  GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm)
-  {
-    GearContactInput in;
-    const auto gi = geometry::parse_geometry_parameters(prm);
-    const auto pm = geometry::parse_material_parameters(prm);
-    in.pair       = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
-    for (int i = 0; i < 2; ++i)
-      {
-        in.mesh[i]     = mesh::parse_mesh_parameters(prm, i + 1);
-        in.material[i] = fem::elasticity(i == 0 ? pm.gear1 : pm.gear2,
-                                         in.pair->gear(i + 1).parameters().face_width, pm.plane_strain);
-        (void)mesh::gear_domain(in.pair->gear(i + 1), in.mesh[i]); // outline checks, no gmsh
-      }
-    in.fe      = fem::parse_fe_parameters(prm);
-    in.contact = parse_contact_parameters(prm, in.material[0].youngs_modulus, in.material[1].youngs_modulus);
-    using Relief = geometry::TipRelief::Kind;
-    if (in.contact.micro_geometry_as_gap && (gi.gear1.relief.kind != Relief::none || gi.gear2.relief.kind != Relief::none))
-      {
-        geometry::GeometryInput plain = gi;
-        plain.gear1.relief = plain.gear2.relief = geometry::TipRelief();
-        in.unmodified_pair = std::make_unique<geometry::GearPair>(geometry::build_pair(plain));
-      }
-    in.solve   = parse_solve_parameters(prm);
-    (void)in.positions(); // checks the position list
-    check_small_strain(*in.pair, pm, in.solve.torques);
-    return in;
-  }
-
-  std::vector<std::pair<std::string, double>> GearContactInput::positions() const
-  {
-    std::vector<std::pair<std::string, double>> out;
-    const auto &s = solve;
-    switch (s.positions)
-      {
-        case SolveParameters::Positions::cycle:
-          {
-            const double start = s.start_at_A ? pair->point("A").roll_angle : s.start;
-            for (const double phi : cycle_positions(*pair, s.n_positions, s.pitches, start))
-              out.emplace_back("", phi);
-            break;
-          }
-        case SolveParameters::Positions::named:
-          for (const auto &n : s.names)
-            out.emplace_back(n, pair->point(n).roll_angle);
-          break;
-        case SolveParameters::Positions::list:
-          for (const double phi : s.roll_angles)
-            out.emplace_back("", phi);
-          break;
-      }
-    // Name the cycle positions that coincide with a point of the line of action.
-    for (auto &[name, phi] : out)
-      if (name.empty())
-        for (const char *n : {"A", "B", "C", "D", "E"})
-          if (std::abs(phi - pair->point(n).roll_angle) < 1e-9)
-            name = n;
-    return out;
-  }
-
-  std::unique_ptr<GearContactModel> GearContactInput::model() const
-  {
-    return std::make_unique<GearContactModel>(*pair, mesh, material, fe, contact, unmodified_pair.get());
   }
 } // namespace gearfem::contact

@@ -1,4 +1,5 @@
 #include "dynamics/analysis.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "base/progress.h"
@@ -105,7 +106,7 @@ namespace gearfem::dynamics
         if (k >= o.min_transient_periods)
           {
             const double sd = std::max(scale_d0, amp);
-            p = periodicity(r.poincare_delta, r.poincare_rate, sd, sd * 2 * M_PI / T,
+            p = periodicity(r.poincare_delta, r.poincare_rate, sd, sd * 2 * units::pi / T,
                             o.steady_tolerance);
             if (p > 0)
               {
@@ -320,7 +321,7 @@ namespace gearfem::dynamics
   {
     double m = 1e300;
     for (int i = 0; i < samples; ++i)
-      m = std::min(m, value(2 * M_PI / omega * i / samples));
+      m = std::min(m, value(2 * units::pi / omega * i / samples));
     return m;
   }
 
@@ -330,7 +331,7 @@ namespace gearfem::dynamics
     using C = std::complex<double>;
     HarmonicBalance hb;
     hb.N = N;
-    const int z = static_cast<int>(std::lround(2 * M_PI / law.period()));
+    const int z = static_cast<int>(std::lround(2 * units::pi / law.period()));
     hb.omega = z * W;
     const double kbar = law.mean_stiffness();
     const auto &a = law.cos_coefficients();

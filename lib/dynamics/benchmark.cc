@@ -1,4 +1,5 @@
 #include "dynamics/benchmark.h"
+#include "base/units.h"
 
 #include "dynamics/analysis.h"
 #include "dynamics/mesh_force.h"
@@ -23,11 +24,11 @@ namespace gearfem::dynamics
     /// stiffening in delta, the shape the calibration tables will have.
     DteModel parker_table_model(double torque)
     {
-      const PairData pair = standard_pair(50, 50, 3e-3, 20 * M_PI / 180, 1.0, 0.5, 0.5, 0.0);
+      const PairData pair = standard_pair(50, 50, 3e-3, 20 * units::deg, 1.0, 0.5, 0.5, 0.0);
       const double b = 0.02, ks = 14e9 * b, kbar = ks * (0.75 * pair.contact_ratio + 0.25);
       const FourierStiffnessLaw k(kbar, 50, {-0.12, 0.04, -0.02});
       MeshTable t;
-      t.period = 2 * M_PI / 50;
+      t.period = 2 * units::pi / 50;
       t.base_radius = pair.r_b1;
       const int nt = 64, nd = 16;
       for (int i = 0; i < nt; ++i)
@@ -39,12 +40,12 @@ namespace gearfem::dynamics
           t.values.push_back(pair.r_b1 * k.force(t.theta[i], t.second[j], 0) *
                              (1 + 0.1 * t.second[j] / 60e-6));
       const double rho = 7850, r = 0.075;
-      const double J = 0.5 * M_PI * rho * b * std::pow(r, 4);
+      const double J = 0.5 * units::pi * rho * b * std::pow(r, 4);
       DteModel::Parameters p;
       p.mass = J * J / (J * pair.r_b1 * pair.r_b1 + J * pair.r_b2 * pair.r_b2);
       p.static_force = torque / pair.r_b1;
       p.zeta = 0.02;
-      p.speed = 3000 * 2 * M_PI / 50;
+      p.speed = 3000 * 2 * units::pi / 50;
       ContactLogic c;
       c.backlash = pair.backlash > 0 ? pair.backlash : 100e-6;
       return DteModel(std::make_unique<TableLaw>(t, ThetaInterpolation::linear), c, p);
@@ -94,7 +95,7 @@ namespace gearfem::dynamics
     // 3. Full up/down sweep, 2 x 200 speeds x 300 periods, two threads.
     {
       const int n = std::max(4, static_cast<int>(std::lround(200 * scale)));
-      const double w0 = 1000 * 2 * M_PI / 50, w1 = 5000 * 2 * M_PI / 50; // f_mesh 1-5 kHz
+      const double w0 = 1000 * 2 * units::pi / 50, w1 = 5000 * 2 * units::pi / 50; // f_mesh 1-5 kHz
       const auto t0 = std::chrono::steady_clock::now();
       const auto pts = sweep_up_down(model, io, ro, w0, w1, n, nullptr, 2);
       const double dt = seconds_since(t0);

@@ -1,5 +1,5 @@
 #pragma once
-// Performance figures of the dynamics module (issue 6, sec. 5), printed, not asserted.
+// Performance figures of the dynamics module, printed, not asserted.
 #include <ostream>
 
 namespace gearfem::dynamics

@@ -1,4 +1,6 @@
 #include "dynamics/case.h"
+#include "geometry/limits.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -7,6 +9,8 @@
 
 namespace gearfem::dynamics
 {
+  namespace limits = geometry::limits;
+
   namespace
   {
     /// Area of an unshifted involute tooth between the root circle r - 1.25 m and the tip
@@ -16,7 +20,7 @@ namespace gearfem::dynamics
     {
       const double r = m * z / 2, rb = r * std::cos(alpha);
       const double rf = r - 1.25 * m, ra = r + addendum * m;
-      const double psi = 2 * M_PI * cf / z; // angular thickness at the reference circle
+      const double psi = 2 * units::pi * cf / z; // angular thickness at the reference circle
       auto inv = [](double a) { return std::tan(a) - a; };
       auto s = [&](double rr) {
         const double q = std::max(rr, rb);
@@ -51,7 +55,7 @@ namespace gearfem::dynamics
       {
         // Report in the units of the input: rpm, or Omega [-] in the Kahraman-Singh mode.
         const bool ks = model == ModelKind::kahraman_singh;
-        const double f = ks ? 1.0 : 30.0 / M_PI;
+        const double f = ks ? 1.0 : 30.0 / units::pi;
         const std::string u = ks ? "" : " rpm";
         throw InputError("Dynamics/Analysis/Sweep minimum speed",
                          to_string_g(sweep_min * f) + u + " (maximum " + to_string_g(sweep_max * f) + u + ")",
@@ -63,7 +67,12 @@ namespace gearfem::dynamics
     if (model != ModelKind::kahraman_singh)
       {
         require_greater("Dynamics/Operating/Pinion speed", speed, 0.0, "rad/s");
-        require_greater("Dynamics/Pair/Face width", face_width, 0.0, "m");
+        limits::check_teeth("Dynamics/Pair/Pinion teeth", z1);
+        limits::check_teeth("Dynamics/Pair/Gear teeth", z2);
+        limits::check_module("Dynamics/Pair/Module", module);
+        limits::check_pressure_angle("Dynamics/Pair/Pressure angle", alpha);
+        limits::check_addendum("Dynamics/Pair/Addendum coefficient", addendum);
+        limits::check_face_width("Dynamics/Pair/Face width", face_width);
         require_greater("Dynamics/Mesh force/Single-pair stiffness", single_pair_stiffness, 0.0);
         require_greater("Dynamics/Mesh force/Double-pair factor", double_pair_factor, 0.0);
         if (law == LawKind::ste && ste_theta.size() < 2)
@@ -115,7 +124,7 @@ namespace gearfem::dynamics
         case LawKind::ste:
           law = std::make_unique<SteExcitationLaw>(c.ste_stiffness > 0 ? c.ste_stiffness : kmean_iso,
                                                    c.ste_theta, c.ste_values,
-                                                   2 * M_PI / c.z1);
+                                                   2 * units::pi / c.z1);
           break;
         case LawKind::external:
           if (!c.external_law)
@@ -139,13 +148,13 @@ namespace gearfem::dynamics
       }
 
     const double r1 = c.module * c.z1 / 2, r2 = c.module * c.z2 / 2;
-    auto cylinder = [&](double r) { return 0.5 * M_PI * c.density * c.face_width * std::pow(r, 4); };
+    auto cylinder = [&](double r) { return 0.5 * units::pi * c.density * c.face_width * std::pow(r, 4); };
     double J1 = c.inertia1 > 0 ? c.inertia1 : cylinder(r1);
     double J2 = c.inertia2 > 0 ? c.inertia2 : cylinder(r2);
     note(fmt("contact ratio", eps, ""));
     note(fmt("backlash", contact.backlash * 1e6, "um"));
     note(fmt("base radii r_b1", pair.r_b1 * 1e3, "mm") + ", " + fmt("r_b2", pair.r_b2 * 1e3, "mm"));
-    note(fmt("start of contact theta_A", pair.theta_A * 180 / M_PI, "deg"));
+    note(fmt("start of contact theta_A", pair.theta_A / units::deg, "deg"));
     note(fmt("inertias J1", J1, "kg m^2") + ", " + fmt("J2", J2, "kg m^2"));
     if (c.tooth_mass)
       {

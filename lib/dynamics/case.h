@@ -2,6 +2,7 @@
 // A complete dynamics case in SI units (filled from the `Dynamics` parameter section by
 // parameters.h, or directly in code) and the factory that builds its model.
 #include "dynamics/analysis.h"
+#include "base/units.h"
 #include "dynamics/models.h"
 #include "dynamics/pair_data.h"
 
@@ -29,9 +30,9 @@ namespace gearfem::dynamics
   /// because these laws need the geometry, analytical or HDF5 modules).
   enum class ExternalSource
   {
-    analytical_table, ///< seed 000 torque table of the Weber/Cornell model
+    analytical_table, ///< torque table of the Weber/Cornell model (Gkimisis 2019)
     table_file,       ///< HDF5 mesh table (docs/mesh-tables.md)
-    ricker            ///< seed 000 semi-analytical law with Ricker load sharing
+    ricker            ///< semi-analytical law with Ricker load sharing (Gkimisis 2019)
   };
 
   struct DynamicsCase
@@ -61,7 +62,7 @@ namespace gearfem::dynamics
     ExternalSource external_source = ExternalSource::analytical_table;
     std::string table_file; ///< table_file: resolved path of the HDF5 mesh table
     std::string table_hash; ///< table_file: expected geometry hash; empty: not checked
-    double ricker_widening = 2.0 * 3.14159265358979323846 / 180.0 / 1e-3; ///< c_x [rad/m]
+    double ricker_widening = 2.0 * units::pi / 180.0 / 1e-3; ///< c_x [rad/m]
     bool ricker_centred = false; ///< SecondPair::centred instead of the thesis' eq. 3.45
     // Operating point.
     double input_torque = 100, output_torque = -1; ///< [N m]

@@ -1,9 +1,10 @@
 // The external mesh-force laws of `Dynamics/Mesh force/Law = external` (law_factory.h).
 #include "dynamics/law_factory.h"
+#include "base/units.h"
 
 #include "analytical/from_geometry.h"
 #include "analytical/mesh_cycle.h"
-#include "analytical/seed000.h"
+#include "analytical/ricker_load_sharing.h"
 #include "base/errors.h"
 #include "dynamics/ricker_law.h"
 #include "geometry/pair.h"
@@ -30,7 +31,7 @@ namespace gearfem::dynamics
         g.rack.module = c.module;
         g.rack.pressure_angle = c.alpha;
         g.rack.addendum = c.addendum;
-        g.thickness_allowance = (0.5 - cf) * M_PI * c.module;
+        g.thickness_allowance = (0.5 - cf) * units::pi * c.module;
         return g;
       };
       geometry::PairParameters pp;
@@ -45,12 +46,10 @@ namespace gearfem::dynamics
                                                const geometry::GearPair &pair)
     {
       const analytical::Material mat{c.youngs_modulus, c.poisson_ratio};
-      return analytical::PairCompliance(analytical::involute_tooth(pair.gear(1)),
-                                        analytical::involute_tooth(pair.gear(2)), mat, mat,
-                                        c.face_width, analytical::pair_line(pair));
+      return analytical::pair_compliance(pair, mat, mat);
     }
 
-    /// The seed 000 torque table T(theta, delta) (Gkimisis 2019 eqs. 3.10-3.17, with the
+    /// The torque table T(theta, delta) of Gkimisis 2019 (eqs. 3.10-3.17, with the
     /// corner contacts OA/BΓ) of the Weber/Cornell model (lib/analytical) on the generated
     /// pair, as a dynamics TableLaw:
     /// 128 positions over one mesh period from the start of contact A, 41 compressions on a
@@ -61,7 +60,7 @@ namespace gearfem::dynamics
                                                               std::vector<std::string> &notes)
     {
       const geometry::GearPair pair = generated_pair(c);
-      // With the corner contacts OA/BΓ of seed 000 (lib/analytical/corner.h): outside A..E a
+      // With the corner contacts OA/BΓ of Gkimisis 2019 (lib/analytical/corner.h): outside A..E a
       // pair carries load once the compression exceeds the rigid corner gap.
       const analytical::MeshModel mm = pair_compliance(c, pair).mesh_model(true);
       const double F = c.input_torque / mm.rb1;
@@ -69,13 +68,13 @@ namespace gearfem::dynamics
       for (const auto &st : analytical::mesh_cycle(mm, F, 64))
         kmin = std::min(kmin, st.stiffness);
       dyn::MeshTable t;
-      t.period = 2 * M_PI / c.z1;
+      t.period = 2 * units::pi / c.z1;
       t.base_radius = mm.rb1;
       const double phiA = (mm.g_A - mm.g_C) / mm.rb1;
       const int nt = 128, nd = 41;
       for (int i = 0; i < nt; ++i)
         t.theta.push_back(phiA + t.period * i / nt);
-      // Geometric grid of x (seed 000): 0, then x_max 1e-3 q^(j-1) up to x_max = 10 F/k_min,
+      // Geometric grid of x (Gkimisis 2019): 0, then x_max 1e-3 q^(j-1) up to x_max = 10 F/k_min,
       // dense where the Hertz term and the corner contacts make T(x) curved.
       const double xmax = 10 * F / kmin, q = std::pow(1e3, 1.0 / (nd - 2));
       t.second.push_back(0.0);
@@ -114,7 +113,7 @@ namespace gearfem::dynamics
           throw InputError(entry + " = " + c.table_file + ": " + e.what());
         }
       const geometry::GearPair pair = generated_pair(c);
-      const double period = 2 * M_PI / c.z1, rb1 = analytical::pair_line(pair).rb1;
+      const double period = 2 * units::pi / c.z1, rb1 = analytical::pair_line(pair).rb1;
       if (std::abs(t.period - period) > 1e-9 * period)
         throw InputError(entry, c.table_file + " (period " + to_string_g(t.period) + " rad)",
                          "period 2 pi/z1 = " + to_string_g(period) + " rad (Dynamics/Pair/Pinion teeth = " +
@@ -150,8 +149,8 @@ namespace gearfem::dynamics
       return law;
     }
 
-    /// Seed 000 semi-analytical law (eqs. 3.18-3.46): the closed-form pair stiffness of
-    /// lib/analytical (Seed000SemiAnalytical) with Ricker-wavelet load sharing
+    /// Semi-analytical law of Gkimisis 2019 (eqs. 3.18-3.46): the closed-form pair stiffness of
+    /// lib/analytical (RickerSemiAnalytical) with Ricker-wavelet load sharing
     /// (dynamics::RickerLoadSharingLaw). Its Hertz term is linearised with the mean mesh
     /// stiffness of the full Weber/Cornell model at the static load (eq. 3.30).
     std::shared_ptr<const dyn::MeshForceLaw> ricker_law(const dyn::DynamicsCase &c,
@@ -168,7 +167,7 @@ namespace gearfem::dynamics
       for (const auto &st : cycle)
         kmean += st.stiffness / cycle.size();
       const analytical::Material mat{c.youngs_modulus, c.poisson_ratio};
-      auto sa = std::make_shared<analytical::Seed000SemiAnalytical>(
+      auto sa = std::make_shared<analytical::RickerSemiAnalytical>(
         analytical::involute_tooth(pair.gear(1)), analytical::involute_tooth(pair.gear(2)), mat, mat,
         c.face_width, L, kmean, pc.options(), c.ricker_widening);
       dyn::RickerLawParameters p;
@@ -183,9 +182,9 @@ namespace gearfem::dynamics
         [sa, gC, rb1](double w1, double x) { return sa->pair_stiffness(gC + rb1 * w1, x); }, p);
       if (backlash < 0)
         backlash = pair.normal_backlash();
-      notes.push_back("seed 000 semi-analytical law: Hertz term linearised at kbar = " +
+      notes.push_back("Gkimisis 2019 semi-analytical law: Hertz term linearised at kbar = " +
                       to_string_g(kmean / c.face_width / 1e9) + " N/(mm um) (Weber/Cornell mean at the "
-                      "static load), c_x = " + to_string_g(c.ricker_widening * 180 / M_PI * 1e-3) +
+                      "static load), c_x = " + to_string_g(c.ricker_widening / units::deg * 1e-3) +
                       " deg/mm, second pair " + (c.ricker_centred ? "centred" : "as eq. 3.45"));
       return law;
     }

@@ -1,10 +1,10 @@
 #pragma once
 // The mesh-force law of `Law = external` built from its source (DynamicsCase::external_source):
-//  - analytical: the seed 000 torque table T(theta, delta) of the Weber/Cornell model with
+//  - analytical: the Gkimisis 2019 torque table T(theta, delta) of the Weber/Cornell model with
 //    corner contacts on the pair generated from `Dynamics/Pair`;
 //  - table file: an HDF5 mesh table (io/mesh_table_io.h) checked against the case (geometry
 //    hash, period, base radius, static load inside the table);
-//  - ricker: seed 000's semi-analytical law with Ricker-wavelet load sharing.
+//  - ricker: the semi-analytical law of Gkimisis 2019 with Ricker-wavelet load sharing.
 // Light layer (geometry, analytical, io; no deal.II).
 #include "dynamics/case.h"
 #include "dynamics/mesh_force.h"

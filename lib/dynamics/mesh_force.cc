@@ -1,4 +1,5 @@
 #include "dynamics/mesh_force.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "base/roots.h"
@@ -302,12 +303,12 @@ namespace gearfem::dynamics
                        ">= 2 nodes, equal sizes");
     for (std::size_t i = 1; i < th_.size(); ++i)
       if (!(th_[i] > th_[i - 1]))
-        throw InputError("STE table positions", to_string_g(th_[i] * 180 / M_PI) + " deg after " +
-                                                  to_string_g(th_[i - 1] * 180 / M_PI) + " deg",
+        throw InputError("STE table positions", to_string_g(th_[i] / units::deg) + " deg after " +
+                                                  to_string_g(th_[i - 1] / units::deg) + " deg",
                          "strictly increasing");
     if (th_.back() - th_.front() >= period_ * (1 - 1e-12))
-      throw InputError("STE table positions", "span " + to_string_g((th_.back() - th_.front()) * 180 / M_PI) + " deg",
-                       "less than one mesh period " + to_string_g(period_ * 180 / M_PI) + " deg",
+      throw InputError("STE table positions", "span " + to_string_g((th_.back() - th_.front()) / units::deg) + " deg",
+                       "less than one mesh period " + to_string_g(period_ / units::deg) + " deg",
                        "give one period of STE (it is repeated periodically)");
     double mean = 0;
     for (double v : e_)

@@ -2,7 +2,7 @@
 // Mesh-force laws of a spur gear pair, all behind one interface (MeshForceLaw), and the
 // contact logic with backlash that turns a one-flank law into the force of the pair:
 //   s = 1 (drive contact, delta > 0), 0 (gap, -b < delta <= 0), -1 (back contact, delta <= -b)
-// (Gkimisis 2019, seed 000, eqs. 4.9-4.11; Kahraman & Singh 1990, JSV 142(1), eq. 3).
+// (Gkimisis 2019, eqs. 4.9-4.11; Kahraman & Singh 1990, JSV 142(1), eq. 3).
 // Units: theta = pinion roll angle [rad] (0 at the pitch point C), delta = compression
 // along the line of action [m], force [N]. In the dimensionless Kahraman-Singh mode the
 // same code runs with dimensionless numbers (period 2 pi, backlash 2, mean stiffness 1).
@@ -204,12 +204,12 @@ namespace gearfem::dynamics
 
   /// The force of the pair from a drive-flank law, backlash and the reverse-flank mapping.
   /// Back contact (s = -1) uses the coast law at theta_r = reverse_offset - theta with
-  /// compression delta_r = -delta - b (seed 000, 4.11); with reverse_mapping = false it
+  /// compression delta_r = -delta - b (Gkimisis 2019, 4.11); with reverse_mapping = false it
   /// uses theta itself (Kahraman & Singh's symmetric dead zone).
   struct ContactLogic
   {
     double backlash = 0;          ///< total clearance b along the line of action [m]; inf: none
-    bool reverse_mapping = false; ///< seed 000 reverse-flank mapping on/off
+    bool reverse_mapping = false; ///< reverse-flank mapping (Gkimisis 2019) on/off
     double reverse_offset = 0;    ///< theta_r = reverse_offset - theta [rad]
     /// Contact state from delta.
     int state(double delta) const { return delta > 0 ? 1 : (delta > -backlash ? 0 : -1); }

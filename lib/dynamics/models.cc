@@ -1,4 +1,5 @@
 #include "dynamics/models.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -40,7 +41,7 @@ namespace gearfem::dynamics
 
   double MeshModel::linear_natural_frequency() const
   {
-    return std::sqrt(law_->mean_stiffness() / equivalent_mass()) / (2.0 * M_PI);
+    return std::sqrt(law_->mean_stiffness() / equivalent_mass()) / (2.0 * units::pi);
   }
 
   MeshMode MeshModel::classify(double theta, double delta) const

@@ -6,7 +6,7 @@
 // 1-DOF DTE model (speed source):  m_eq d'' + c d' + F_mesh(theta(t), d) = F0 + F_e(t),
 //   theta = W t + theta0; Kahraman & Singh (1990) JSV 142(1) eq. (3) is the dimensionless
 //   case m_eq = 1, kbar = 1, c = 2 zeta, b = 2, period 2 pi.
-// 2-DOF torsional model (Gkimisis 2019, seed 000, eqs. 4.1-4.2):
+// 2-DOF torsional model (Gkimisis 2019, eqs. 4.1-4.2):
 //   I1 th1'' = T_in r(t) - r_b1 (F_mesh + F_damp),  I2 th2'' = r_b2 (F_mesh + F_damp) - T_out r(t),
 //   delta = r_b1 th1 - r_b2 th2 (compression along the line of action), theta = th1,
 //   r(t) = min(1, t / t_ramp) the start-up torque ramp; or a speed source on gear 1.
@@ -123,14 +123,14 @@ namespace gearfem::dynamics
     Parameters p_;
   };
 
-  /// Equivalent tooth inertia (Gkimisis/seed 004): J = n_pairs w m_tooth r^2 with the
+  /// Equivalent tooth inertia (Gkimisis 2019; the NTUA tooth-mass thesis): J = n_pairs w m_tooth r^2 with the
   /// deflection-shape weight w = 1/2 for (delta/delta0) weighting (the thesis) or 1/3 for
   /// (delta/delta0)^2 (kinetic-energy equivalence), for a deflection shape linear from the
   /// root (0) to the load point (1) and mass uniform along the height.
   double tooth_inertia(double tooth_mass, double load_radius, double pairs_in_contact,
                        bool energy_weighting);
 
-  /// 2-DOF torsional model (seed 000 4.1-4.2), torque-driven or with a speed source on gear 1.
+  /// 2-DOF torsional model (Gkimisis 2019, 4.1-4.2), torque-driven or with a speed source on gear 1.
   class TorsionalModel : public MeshModel
   {
   public:

@@ -1,4 +1,5 @@
 #include "dynamics/pair_data.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -25,7 +26,7 @@ namespace gearfem::dynamics
                        "> " + to_string_g((p.r_b1 + p.r_b2 - r1 - r2) / 1e-3) + " mm");
     const double aw = std::acos(ca);
     p.working_pressure_angle = aw;
-    const double pb = 2 * M_PI * p.r_b1 / z1;
+    const double pb = 2 * units::pi * p.r_b1 / z1;
     const double g1 = std::sqrt(p.r_a1 * p.r_a1 - p.r_b1 * p.r_b1);
     const double g2 = std::sqrt(p.r_a2 * p.r_a2 - p.r_b2 * p.r_b2);
     const double L = p.center_distance * std::sin(aw); // T1T2
@@ -36,9 +37,9 @@ namespace gearfem::dynamics
     const double gA = L - g2, gC = p.r_b1 * std::tan(aw);
     p.theta_A = (gA - gC) / p.r_b1;
     auto inv = [](double a) { return std::tan(a) - a; };
-    p.backlash = std::cos(alpha) * M_PI * m * (1 - cf1 - cf2) +
+    p.backlash = std::cos(alpha) * units::pi * m * (1 - cf1 - cf2) +
                  2 * (inv(aw) - inv(alpha)) * (p.r_b1 + p.r_b2);
-    p.thickness_angle1 = 2 * M_PI * cf1 / z1 + 2 * (inv(alpha) - inv(aw));
+    p.thickness_angle1 = 2 * units::pi * cf1 / z1 + 2 * (inv(alpha) - inv(aw));
     return p;
   }
 } // namespace gearfem::dynamics

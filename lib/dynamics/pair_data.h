@@ -3,7 +3,7 @@
 // active contact, backlash, tooth-thickness angle), in closed form for an unshifted
 // standard involute spur pair at a given centre distance. SI units.
 // This stands in until geometry::GearPair is available; the formulas are the textbook
-// ones (e.g. Litvin & Fuentes 2004, ch. 10) and seed 000 eq. 2.52 for the backlash.
+// ones (e.g. Litvin & Fuentes 2004, ch. 10) and Gkimisis 2019 eq. 2.52 for the backlash.
 namespace gearfem::dynamics
 {
   struct PairData
@@ -22,7 +22,7 @@ namespace gearfem::dynamics
   /// @param module m [m]; @param alpha rack pressure angle [rad]; @param addendum h_a/m [-];
   /// @param thickness1, thickness2 C_f: tooth thickness at the reference circle / (pi m) [-]
   ///        (0.5 = no backlash); @param delta_a centre-distance change from m (z1+z2)/2 [m].
-  /// Backlash (seed 000 eq. 2.52): b = cos(alpha) pi m (1 - C_f1 - C_f2)
+  /// Backlash (Gkimisis 2019 eq. 2.52): b = cos(alpha) pi m (1 - C_f1 - C_f2)
   ///        + 2 (inv alpha_w - inv alpha)(r_b1 + r_b2).
   /// Throws InputError for z < 5, contact ratio < 1 or >= 2, impossible centre distance.
   PairData standard_pair(int z1, int z2, double module, double alpha, double addendum,

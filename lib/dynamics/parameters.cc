@@ -4,6 +4,7 @@
 #include "params/checked.h"
 #include "base/table.h"
 #include "base/units.h"
+#include "geometry/parameters.h"
 #include "io/solve_results.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -75,26 +76,26 @@ namespace gearfem::dynamics
     prm.enter_subsection("Dynamics");
     prm.declare_entry("Model", "torsional", Selection("DTE|torsional|Kahraman-Singh"),
                       "DTE: 1-DOF relative model with a speed source; torsional: 2-DOF model "
-                      "(seed 000 4.1-4.2); Kahraman-Singh: the dimensionless 1-DOF form "
+                      "(Gkimisis 2019, 4.1-4.2); Kahraman-Singh: the dimensionless 1-DOF form "
                       "(Kahraman & Singh 1990).");
     prm.declare_entry("Analysis", "response", Selection("response|sweep|both"),
                       "Time response at the pinion speed, up/down speed sweep, or both.");
 
     prm.enter_subsection("Pair");
-    prm.declare_entry("Pinion teeth", "20", Integer(5), "z1 [-].");
-    prm.declare_entry("Gear teeth", "40", Integer(5), "z2 [-].");
-    prm.declare_entry("Module", "2.5", Double(0), "Module m. Units: mm.");
-    prm.declare_entry("Pressure angle", "20", Double(5, 40), "Rack pressure angle. Units: deg.");
-    prm.declare_entry("Addendum coefficient", "1.0", Double(0.5, 1.5), "h_a / m [-].");
-    prm.declare_entry("Face width", "30", Double(0), "Face width b. Units: mm.");
+    geometry::declare_teeth_entry(prm, "Pinion teeth", 20, "z1");
+    geometry::declare_teeth_entry(prm, "Gear teeth", 40, "z2");
+    geometry::declare_module_entry(prm, "Module", 2.5);
+    geometry::declare_pressure_angle_entry(prm);
+    geometry::declare_addendum_entry(prm, "Addendum coefficient", "h_a/m of the standard rack of both gears");
+    geometry::declare_face_width_entry(prm, "Face width", 30);
     prm.declare_entry("Pinion thickness coefficient", "0.5", Double(0.3, 0.6),
                       "C_f: tooth thickness at the reference circle / (pi m) [-]; 0.5 is "
-                      "backlash-free (seed 000 uses 0.49).");
+                      "backlash-free (Gkimisis 2019 uses 0.49).");
     prm.declare_entry("Gear thickness coefficient", "0.5", Double(0.3, 0.6), "As above, gear [-].");
     prm.declare_entry("Centre distance change", "0", Double(-10, 10),
                       "Operating centre distance minus m (z1 + z2)/2. Units: mm.");
     prm.declare_entry("Backlash", "-1", Double(),
-                      "Normal backlash along the line of action; < 0: from the pair (seed 000 "
+                      "Normal backlash along the line of action; < 0: from the pair (Gkimisis 2019 "
                       "eq. 2.52). Units: um.");
     prm.declare_entry("Density", "7850", Double(0), "Units: kg/m^3.");
     prm.declare_entry("Young modulus", "206", Double(1), "E (analytical table law). Units: GPa.");
@@ -109,10 +110,10 @@ namespace gearfem::dynamics
                       Selection("piecewise constant|Fourier|STE|analytical table|table file|Ricker"),
                       "piecewise constant: k_single / k_double zones from the contact ratio; "
                       "Fourier: kbar (1 + sum a_n cos(n z1 theta) + b_n sin); STE: kbar (delta - "
-                      "e(theta)); analytical table: seed 000 torque table T(theta, delta) of the "
+                      "e(theta)); analytical table: Gkimisis 2019 torque table T(theta, delta) of the "
                       "Weber/Cornell model (lib/analytical) on the generated pair; table file: an "
                       "HDF5 mesh table T(theta, delta) or k(theta, F) (docs/mesh-tables.md, e.g. "
-                      "mesh_torque.h5 of gearfem calibrate); Ricker: seed 000 semi-analytical "
+                      "mesh_torque.h5 of gearfem calibrate); Ricker: Gkimisis 2019 semi-analytical "
                       "pair stiffness with Ricker-wavelet load sharing (eqs. 3.18-3.46).");
     prm.declare_entry("Theta interpolation", "linear", Selection("linear|monotone cubic"),
                       "Table laws: bilinear, or monotone cubic (Fritsch-Carlson) in theta [-].");
@@ -124,7 +125,7 @@ namespace gearfem::dynamics
                       "a_n relative to kbar [-]; kbar = c'(0.75 eps + 0.25) b (ISO c_gamma_alpha).");
     prm.declare_entry("Fourier sine coefficients", "", List(Double()), "b_n relative to kbar [-].");
     prm.declare_entry("Reverse-flank mapping", "true", Bool(),
-                      "Back contact at theta_r = thickness angle - theta (seed 000 4.11) [-].");
+                      "Back contact at theta_r = thickness angle - theta (Gkimisis 2019, 4.11) [-].");
     prm.declare_entry("STE file", "", dealii::Patterns::Anything(),
                       "Law = STE: CSV with a header line, either two columns (mesh position [deg], "
                       "STE [um] over one mesh period) or the sweep.csv of gearfem solve (its rows at "
@@ -137,7 +138,7 @@ namespace gearfem::dynamics
                       "geometry fingerprint); empty: not checked (the hash is printed).");
     prm.declare_entry("Ricker widening", "2", Double(0),
                       "Law = Ricker: c_x, widening of the double-contact zone with the "
-                      "compression (seed 000 eq. 3.42, thesis: about 2). Units: deg/mm.");
+                      "compression (Gkimisis 2019 eq. 3.42, thesis: about 2). Units: deg/mm.");
     prm.declare_entry("Ricker second pair", "thesis", Selection("thesis|centred"),
                       "Law = Ricker: neighbour pair of eq. 3.36 switched at the pitch point "
                       "(eq. 3.45 as printed) or at the centre of AB (continuous force) [-].");
@@ -152,9 +153,9 @@ namespace gearfem::dynamics
     prm.declare_entry("Speed source", "false", Bool(), "Impose the pinion speed (2-DOF model) [-].");
     prm.declare_entry("Damping ratio", "0.02", Double(), "zeta: c = 2 zeta sqrt(kbar m_eq) [-].");
     prm.declare_entry("Damping only in contact", "false", Bool(), "[-]");
-    prm.declare_entry("Tooth mass", "false", Bool(), "Add the equivalent tooth inertia (seed 004) [-].");
+    prm.declare_entry("Tooth mass", "false", Bool(), "Add the equivalent tooth inertia (the NTUA tooth-mass thesis) [-].");
     prm.declare_entry("Tooth mass weighting", "linear", Selection("linear|quadratic"),
-                      "(delta/delta0) as in seed 004, or (delta/delta0)^2 (kinetic energy) [-].");
+                      "(delta/delta0) as in the NTUA tooth-mass thesis, or (delta/delta0)^2 (kinetic energy) [-].");
     prm.declare_entry("Start from rest deflection", "false", Bool(),
                       "true: delta(0) = 0 (zero initial conditions); false: static deflection [-].");
     prm.leave_subsection();

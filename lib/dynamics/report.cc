@@ -1,5 +1,6 @@
 // The analyses of a dynamics case and their output tables.
 #include "dynamics/report.h"
+#include "base/units.h"
 
 #include <cmath>
 #include <iomanip>
@@ -10,7 +11,7 @@ namespace gearfem::dynamics
 {
   namespace
   {
-    const double pi = 3.14159265358979323846;
+    using units::pi;
 
     /// A time response of a clone of `model` at its speed (or at `speed` if > 0), from the
     /// static state (the branch reached from rest; a sweep shows the others). Returns the
@@ -59,7 +60,7 @@ namespace gearfem::dynamics
     for (std::size_t i = 0; i < r.t.size(); ++i)
       {
         const double th = m.pinion_speed() * r.t[i];
-        t.add_row({r.t[i], u.ks ? th : th * 180 / pi, r.delta[i] * u.d_scale + u.d_offset, r.rate[i] * u.v_scale,
+        t.add_row({r.t[i], u.ks ? th : th / units::deg, r.delta[i] * u.d_scale + u.d_offset, r.rate[i] * u.v_scale,
                    r.force[i], double(r.state[i])});
       }
     Table p;

@@ -4,6 +4,7 @@
 // output tables (response, poincare, spectrum, portrait_<k>_*, sweep; docs/output-format.md)
 // and the summary text. `gearfem dynamics` writes them; a batch driver can call the same.
 #include "base/table.h"
+#include "base/units.h"
 #include "dynamics/analysis.h"
 #include "dynamics/case.h"
 
@@ -20,7 +21,7 @@ namespace gearfem::dynamics
     bool ks = false;
     double d_scale = 1e6, d_offset = 0; ///< DTE [um] (KS: x = delta + 1 [-])
     std::string d_unit = "um", v_unit = "mm/s", f_unit = "N", t_unit = "s", hz = "Hz", speed_unit = "rpm";
-    double v_scale = 1e3, speed_scale = 60 / (2 * 3.14159265358979323846);
+    double v_scale = 1e3, speed_scale = 60 / (2 * units::pi);
     explicit OutputUnits(bool kahraman_singh);
   };
 

@@ -1,4 +1,5 @@
 #include "dynamics/ricker_law.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -11,7 +12,7 @@ namespace gearfem::dynamics
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
     /// Midpoint samples per period for the mean stiffness.
     constexpr int mean_samples = 4096;
   } // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 000 semi-analytical mesh force with Ricker-wavelet load sharing (Gkimisis 2019,
+// Semi-analytical mesh force with Ricker-wavelet load sharing (Gkimisis 2019,
 // NTUA, ch. 3.4, eqs. 3.35-3.46), as a MeshForceLaw for the dynamics:
 //
 //   F(w1, x)  = [K(w1, x) + g(w1, x) K(f(w1), x)] x                            (3.36)
@@ -23,6 +23,7 @@
 // K(w1 - p)] x. The law reports w1 = 0 as a break so that the integrator locates it;
 // SecondPair::centred switches at wbar instead (g = 0 there), which makes F continuous.
 #include "dynamics/mesh_force.h"
+#include "base/units.h"
 
 #include <functional>
 
@@ -47,7 +48,7 @@ namespace gearfem::dynamics
     double omega_B = 0; ///< end of AB [rad] (> 0); contact ratio (w_B - w_A) z1/(2 pi) in (1, 2)
     /// Widening of the double-contact zone with compression [rad/m] (eq. 3.42; the thesis
     /// takes c_x = 2 deg/mm from its Fig. 16).
-    double c_x = 2.0 * 3.14159265358979323846 / 180.0 / 1e-3;
+    double c_x = 2.0 * units::pi / 180.0 / 1e-3;
     /// Compression at which mean_stiffness() is evaluated [m] (the static deflection).
     double nominal_compression = 1e-5;
     /// K is evaluated at max(|x|, this) [m], so that a load-dependent K (the Hertz ln x
@@ -56,7 +57,7 @@ namespace gearfem::dynamics
     SecondPair second_pair = SecondPair::thesis;
   };
 
-  /// Seed 000 Ricker-wavelet load-sharing mesh force (eqs. 3.36-3.46; see the file header).
+  /// Ricker-wavelet load-sharing mesh force of Gkimisis 2019 (eqs. 3.36-3.46; see the file header).
   class RickerLoadSharingLaw : public MeshForceLaw
   {
   public:

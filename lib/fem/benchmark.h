@@ -1,5 +1,5 @@
 #pragma once
-// The fem benchmark (issue 3 section 6): a full gear of the input's gear 1 with
+// The fem benchmark: a full gear of the input's gear 1 with
 // h_contact = h_fillet = 0.4, 0.2, 0.1 mm on the fine teeth (Mesh section otherwise), Q2,
 // clamped bore, ISO tip load on tooth 0; prints cells, DoFs, the times to mesh, assemble,
 // factorise and solve, peak memory and the fillet-stress error against the finest level.

@@ -1,5 +1,6 @@
 // Flank-load cases on a meshed gear body (ISO 6336-3 tip loading).
 #include "fem/tooth_load.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -16,7 +17,7 @@ namespace gearfem::fem
     {
       return std::chrono::duration<double>(Clock::now() - t0).count();
     }
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
   } // namespace
 
   std::pair<mesh::Vec2, mesh::Vec2> flank_point_and_normal(const geometry::ToothProfile &tooth,

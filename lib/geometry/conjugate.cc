@@ -1,6 +1,7 @@
 // Conjugate generation (Costopoulos) and its inverse (Spitas, Costopoulos & Spitas 2002).
 // See conjugate.h and docs/geometry.md for the derivation of every term below.
 #include "geometry/conjugate.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -122,9 +123,9 @@ namespace gearfem::geometry
       // Two solutions: theta = beta - asin(w) and theta = beta - pi + asin(w). The contact is
       // the one that turns the outward normal towards the rack (n.y > 0); the other touches
       // the back of the flank. Nearest to zero only decides a degenerate case (near the base
-      // circle, at large turns, the back-side root can be nearer to zero: issue 15).
-      const double t_a = std::remainder(beta - a, 2.0 * M_PI);
-      const double t_b = std::remainder(beta - M_PI + a, 2.0 * M_PI);
+      // circle, at large turns, the back-side root can be nearer to zero).
+      const double t_a = std::remainder(beta - a, 2.0 * units::pi);
+      const double t_b = std::remainder(beta - units::pi + a, 2.0 * units::pi);
       const Vec2   n   = outward_sign * Vec2(G1.y(), -G1.x()) / L;
       const bool   ua  = (rot(-t_a) * n).y() > 0, ub = (rot(-t_b) * n).y() > 0;
       if (ua != ub ? ua : std::abs(t_a) <= std::abs(t_b))

@@ -1,5 +1,5 @@
 #pragma once
-// Conjugate generation from any rack (Costopoulos; seed 003 eqs.):
+// Conjugate generation from any rack (Costopoulos; Koronaios 2021 eqs.):
 //   K = -(y y' + x),  theta = K / r0,
 //   gear point = Rot(theta) (x + K, y + r0)   [gear centre at the origin]
 // and the inverse ("involutisation", Spitas, Costopoulos & Spitas 2002): the rack that

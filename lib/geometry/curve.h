@@ -87,7 +87,7 @@ namespace gearfem::geometry
   };
 
   /// Clamped B-spline of degree p (default 4) on a uniform open knot vector, t in [0, 1],
-  /// with exact derivatives (seed 003: degree 4, 5 control points).
+  /// with exact derivatives (Koronaios 2021: degree 4, 5 control points).
   class BSplineCurve : public Curve
   {
   public:

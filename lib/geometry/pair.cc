@@ -1,5 +1,5 @@
 // Spur-pair kinematics: closed-form involute relations (ISO 21771 / AGMA 908 line-of-action
-// construction, seed 001) and a general gap-closing search on the exact outlines.
+// construction, Siasos 2010) and a general gap-closing search on the exact outlines.
 #include "geometry/pair.h"
 
 #include "base/errors.h"
@@ -230,7 +230,7 @@ namespace gearfem::geometry
         if (std::isnan(phiE))
           phiE = phi_of(path_.back(), path_.back().tl);
         // One contact point per tooth pair: the pinion angle must change one way along the
-        // active path (inside both tip circles). Racks like seed 003's sinusoid reverse it
+        // active path (inside both tip circles). Racks like the sinusoid of Koronaios 2021 reverse it
         // (K(u) = -u + m sin(4u/m)): several points of a flank touch at once.
         // (Each piece on its own: pieces may run in either parameter direction.)
         for (const auto &pc : path_)
@@ -365,8 +365,8 @@ namespace gearfem::geometry
       // clockwise, so the tooth n pitches clockwise is reached by turning n pitches
       // counter-clockwise. The former reduction turned the wrong way and to the nearest
       // tooth axis: a gear-2 tip in a tooth space measured against a flank two pitches away
-      // gave -14 mm, a spurious root of the gap, at 4 of 20 positions of seed 003's case-2
-      // optimum.)
+      // gave -14 mm, a spurious root of the gap, at 4 of 20 positions of the case-2
+      // optimum of Koronaios 2021.)
       const int  k  = static_cast<int>(std::ceil(std::atan2(qb.x(), qb.y()) / pitch1));
       qb            = rotate(qb, k * pitch1);
       double best   = std::numeric_limits<double>::infinity();
@@ -432,8 +432,8 @@ namespace gearfem::geometry
       throw SolverError("conjugate search did not close the gap at phi1 = " + to_string_g(phi1) +
                         " (residual " + to_string_g(f1) + " m)");
     // The gap is periodic in beta with gear 2's angular pitch, and the secant iteration can
-    // land on a root whole pitches away (seed 003's case-2 optimum: two pitches at four of
-    // twenty positions). Every root is the same contact up to the numbering of gear 2's
+    // land on a root whole pitches away (the case-2 optimum of Koronaios 2021: two pitches at
+    // four of twenty positions). Every root is the same contact up to the numbering of gear 2's
     // teeth, but a sector model has only the teeth that mesh at the nominal angle: return
     // the root nearest the nominal ratio.
     const double nominal = phase2_ - phi1 / ratio(), pitch2 = g2_.angular_pitch();

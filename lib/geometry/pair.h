@@ -127,7 +127,7 @@ namespace gearfem::geometry
   /// different geometry.
   std::string geometry_fingerprint(const GearPair &pair);
 
-  /// Seed 001 (Siasos): minimum number of teeth free of undercut,
+  /// Siasos 2010: minimum number of teeth free of undercut,
   /// Z_min = 2[(h_fP* - x) - rho_fP*(1 - sin a)] / sin^2 a.
   double minimum_teeth_without_undercut(double alpha, double dedendum, double root_radius,
                                         double shift);

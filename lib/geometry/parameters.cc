@@ -8,6 +8,7 @@
 #include "base/number.h"
 #include "params/checked.h"
 #include "base/units.h"
+#include "geometry/limits.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -24,8 +25,7 @@ namespace gearfem::geometry
     void declare_gear(dealii::ParameterHandler &prm, const std::string &name, int teeth)
     {
       prm.enter_subsection(name);
-      prm.declare_entry("Number of teeth", std::to_string(teeth), Integer(),
-                        "z. Units: none. Allowed: 5 to 10000.");
+      declare_teeth_entry(prm, "Number of teeth", teeth, "z");
       prm.declare_entry("Profile shift coefficient", "0", Double(-5, 5),
                         "x (ISO 21771). Units: multiples of the module.");
       prm.declare_entry("Tip shortening coefficient", "0", Double(),
@@ -34,7 +34,7 @@ namespace gearfem::geometry
       prm.declare_entry("Thickness allowance", "0", Double(),
                         "Reduction of the circular tooth thickness on the reference circle "
                         "(backlash allowance); shifts both flanks inwards. Units: mm.");
-      prm.declare_entry("Face width", "20", Double(), "b. Units: mm. Allowed: > 0.");
+      declare_face_width_entry(prm, "Face width", 20);
       prm.declare_entry("Tip relief", "none", Selection("none|linear|parabolic"),
                         "Profile modification near the tip: amount grows linearly or "
                         "parabolically in roll angle from the start of relief to the tip.");
@@ -68,7 +68,7 @@ namespace gearfem::geometry
       g.relief.length     = params::get_double(prm, "Tip relief length") * units::mm;
       g.relief.roll_angle = params::get_double(prm, "Tip relief roll angle") * units::deg;
       prm.leave_subsection();
-      require_greater(name + "/Face width", g.face_width / units::mm, 0.0, "mm");
+      limits::check_face_width(name + "/Face width", g.face_width);
       if (g.thickness_allowance < 0)
         throw InputError(name + "/Thickness allowance", to_string_g(g.thickness_allowance / units::mm) + " mm",
                          ">= 0 mm", "a negative allowance gives negative backlash");
@@ -99,13 +99,46 @@ namespace gearfem::geometry
     }
   } // namespace
 
+  void declare_teeth_entry(dealii::ParameterHandler &prm, const std::string &name, int default_teeth,
+                           const std::string &what)
+  {
+    prm.declare_entry(name, std::to_string(default_teeth), Integer(),
+                      what + ". Units: none. Allowed: " + std::to_string(limits::min_teeth) + " to " +
+                        std::to_string(limits::max_teeth) + ".");
+  }
+
+  void declare_module_entry(dealii::ParameterHandler &prm, const std::string &name, double default_mm)
+  {
+    prm.declare_entry(name, to_string_g(default_mm), Double(), "m (normal module). Units: mm. Allowed: > 0.");
+  }
+
+  void declare_pressure_angle_entry(dealii::ParameterHandler &prm, const std::string &name)
+  {
+    prm.declare_entry(name, "20", Double(),
+                      "alpha: pressure angle of the basic rack. Units: deg. Allowed: " +
+                        to_string_g(limits::min_pressure_angle_deg) + " to " +
+                        to_string_g(limits::max_pressure_angle_deg) + ".");
+  }
+
+  void declare_addendum_entry(dealii::ParameterHandler &prm, const std::string &name, const std::string &what)
+  {
+    prm.declare_entry(name, "1.0", Double(),
+                      what + ". Units: multiples of the module. Allowed: " + to_string_g(limits::min_addendum) +
+                        " to " + to_string_g(limits::max_addendum) + ".");
+  }
+
+  void declare_face_width_entry(dealii::ParameterHandler &prm, const std::string &name, double default_mm,
+                                const std::string &what)
+  {
+    prm.declare_entry(name, to_string_g(default_mm), Double(), what + ". Units: mm. Allowed: > 0.");
+  }
+
   void declare_geometry_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Rack");
-    prm.declare_entry("Module", "3", Double(), "m. Units: mm. Allowed: > 0.");
-    prm.declare_entry("Pressure angle", "20", Double(), "alpha. Units: deg. Allowed: 10 to 35.");
-    prm.declare_entry("Addendum coefficient", "1.0", Double(),
-                      "h_aP*: sets the tip circle r_a = r + (h_aP* + x - k*) m. Units: module.");
+    declare_module_entry(prm, "Module", 3);
+    declare_pressure_angle_entry(prm);
+    declare_addendum_entry(prm, "Addendum coefficient", "h_aP*: sets the tip circle r_a = r + (h_aP* + x - k*) m");
     prm.declare_entry("Dedendum coefficient", "1.25", Double(),
                       "h_fP*: the cutter addendum, sets the root circle r_f = r + (x - h_fP*) m. "
                       "Units: module.");
@@ -115,8 +148,8 @@ namespace gearfem::geometry
                       "rho_aP*: tooth tip rounding (cutter root radius), 0 = sharp. Units: module.");
     prm.declare_entry("Profile type", "standard", Selection("standard|bspline rack|bspline flank"),
                       "standard: straight-flank rack (involute). bspline rack: gear 1's rack flank "
-                      "from control points (seed 003 case 1). bspline flank: gear 1's flank from "
-                      "control points, rack recovered by involutisation (seed 003 case 2). Gear 2 "
+                      "from control points (Koronaios 2021 case 1). bspline flank: gear 1's flank from "
+                      "control points, rack recovered by involutisation (Koronaios 2021 case 2). Gear 2 "
                       "is generated from the complementary rack.");
     prm.declare_entry("Control points", "", dealii::Patterns::Anything(),
                       "B-spline control points 'a1, b1; a2, b2; ...'. Units: module. bspline rack: "

@@ -1,6 +1,7 @@
 // Tooth outline by rack generation: clipping at the tip circle, undercut trimming, tip
 // relief, sampling and queries. See profile.h for the frame and docs/geometry.md.
 #include "geometry/profile.h"
+#include "geometry/limits.h"
 
 #include "base/errors.h"
 #include "base/roots.h"
@@ -581,9 +582,9 @@ namespace gearfem::geometry
     tp.rack_             = rack;
     const auto  &r       = gear.rack;
     const double m       = r.module;
-    require_greater("Rack/Module", m / units::mm, 0.0, "mm");
-    require_range("Rack/Pressure angle", r.pressure_angle / units::deg, 10.0, 35.0, "deg");
-    require_range(gear.name + "/Number of teeth", gear.teeth, 5, 10000);
+    limits::check_module("Rack/Module", m);
+    limits::check_pressure_angle("Rack/Pressure angle", r.pressure_angle);
+    limits::check_teeth(gear.name + "/Number of teeth", gear.teeth);
     Generation G;
     G.m          = m;
     G.r0         = rack.generating_pitch_radius();

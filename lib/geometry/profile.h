@@ -138,7 +138,7 @@ namespace gearfem::geometry
     /// Involute of the base circle rb at roll angle xi, tooth axis +y, flank on the coast
     /// (x > 0) side, with half tooth-thickness angle `psi_b` at the base circle.
     Vec2 involute(double rb, double psi_b, double xi);
-    /// Trochoid of seed 001 (Siasos) for reference radius r0, cutter tip radius rc and
+    /// Trochoid of Siasos 2010 for reference radius r0, cutter tip radius rc and
     /// cutter addendum hf (including shift), at generating angle theta; coast side.
     /// (In Siasos' frame: the cutter tip-arc centre crosses the tooth axis at theta = 0.)
     Vec2 trochoid(double r0, double rc, double hf, double theta);

@@ -1,4 +1,4 @@
-// The geometry report of `gearfem profile` (moved out of the command, issue 12).
+// The geometry report of `gearfem profile`.
 #include "geometry/profile_report.h"
 
 #include "base/atomic_file.h"

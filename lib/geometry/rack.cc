@@ -3,6 +3,7 @@
 // from the gear centre; the coast side (u > 0) is built, ordered from the gear tip to the
 // gear root. See docs/geometry.md.
 #include "geometry/rack.h"
+#include "geometry/limits.h"
 
 #include "base/errors.h"
 #include "base/roots.h"
@@ -189,10 +190,10 @@ namespace gearfem::geometry
   GeneratingRack GeneratingRack::from_parameters(const GearParameters &gear)
   {
     const RackParameters &r = gear.rack;
-    require_greater("Rack/Module", r.module / units::mm, 0.0, "mm");
-    require_range("Rack/Pressure angle", r.pressure_angle / units::deg, 10.0, 35.0, "deg");
-    require_range(gear.name + "/Number of teeth", gear.teeth, 5, 10000);
-    require_greater("Rack/Addendum coefficient", r.addendum, 0.0);
+    limits::check_module("Rack/Module", r.module);
+    limits::check_pressure_angle("Rack/Pressure angle", r.pressure_angle);
+    limits::check_teeth(gear.name + "/Number of teeth", gear.teeth);
+    limits::check_addendum("Rack/Addendum coefficient", r.addendum);
     require_greater("Rack/Dedendum coefficient", r.dedendum, 0.0);
     if (!(r.root_radius > 0.0 && r.root_radius <= 1.0))
       throw InputError("Rack/Root radius coefficient", to_string_g(r.root_radius), "(0, 1]",
@@ -291,7 +292,7 @@ namespace gearfem::geometry
     if (mate.profile_shift != 0.0)
       throw InputError(mate.name + "/Profile shift coefficient", to_string_g(mate.profile_shift),
                        "0", "the mate of a B-spline gear is generated without profile shift");
-    require_range(mate.name + "/Number of teeth", mate.teeth, 5, 10000);
+    limits::check_teeth(mate.name + "/Number of teeth", mate.teeth);
     GeneratingRack rack;
     rack.m_          = m_;
     rack.r0_         = mate.reference_radius();

@@ -31,7 +31,7 @@ namespace gearfem::geometry
     enum class Kind
     {
       standard, ///< straight flanks at the pressure angle
-      bspline_rack, ///< rack flank given by B-spline control points (seed 003 case 1)
+      bspline_rack, ///< rack flank given by B-spline control points (Koronaios 2021 case 1)
       bspline_flank ///< gear flank given by B-spline control points, rack recovered (case 2)
     };
     Kind kind = Kind::standard;
@@ -104,7 +104,7 @@ namespace gearfem::geometry
     double root_line() const { return v_root_; }
     /// A closed rack: a B-spline flank that starts level on the gear tooth axis (u = 0,
     /// its crest generates the tooth tip) and ends level in the middle of the cutter tooth
-    /// (u = p/2, its trough generates the root), like seed 003's sinusoid and case-1 racks.
+    /// (u = p/2, its trough generates the root), like the sinusoid and case-1 racks of Koronaios 2021.
     /// It needs no cutter tip: the whole rack generates flank, fillet and root, and the
     /// concave part of the tooth (its fillet) may carry contact.
     bool closed() const { return closed_ != nullptr; }

@@ -1,5 +1,6 @@
 // gmsh model construction for a Domain, all-quad meshing, and extraction of MeshData.
 #include "mesh/domain.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -507,7 +508,7 @@ namespace gearfem::mesh
         used[v] = 1;
     r.n_vertices = std::count(used.begin(), used.end(), 1);
     r.min_angle = 360, r.max_angle = 0, r.min_edge = 1e300, r.max_edge = 0;
-    const double rad2deg = 180.0 / 3.14159265358979323846;
+    const double rad2deg = 180.0 / units::pi;
     for (const auto &c : mesh.cells)
       {
         const Vec2 p[4] = {mesh.vertices[c[0]], mesh.vertices[c[1]], mesh.vertices[c[3]],
@@ -635,7 +636,7 @@ namespace gearfem::mesh
     if (!(r_outer > r_inner))
       throw InputError("Mesh/Outer radius", to_string_g(r_outer) + " m",
                        "> bore radius " + to_string_g(r_inner) + " m");
-    const double pi = 3.14159265358979323846;
+    using units::pi;
     Domain d;
     d.h_body = h;
     d.growth = 1.3;

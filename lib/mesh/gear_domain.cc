@@ -1,5 +1,7 @@
 // Gear body domains (full gear or sector) from a ToothProfile.
 #include "base/errors.h"
+#include "geometry/rim.h"
+#include "base/units.h"
 #include "base/number.h"
 #include "base/roots.h"
 #include "mesh/gear_mesh.h"
@@ -17,7 +19,7 @@ namespace gearfem::mesh
     /// Largest h_coast / h_contact ratio meshed without a transition at the coast tip corner.
     /// (Measured on the Parker gear: 2.5 and 2.7 mesh, 3.3 and 4 leave triangles.)
     constexpr double coast_jump_limit = 2.0;
-    constexpr double pi = 3.14159265358979323846;
+    using units::pi;
   } // namespace
 
   double contact_size(const GearMeshParameters &p, double module)
@@ -114,19 +116,11 @@ namespace gearfem::mesh
   double inner_radius(const GearMeshParameters &p, const geometry::ToothProfile &tooth)
   {
     const double rf = tooth.radii().root;
-    double ri;
-    if (p.rim_thickness > 0)
-      {
-        ri = rf - p.rim_thickness;
-        if (!(ri > 0.05 * rf))
-          throw InputError("Mesh/Rim thickness", to_string_g(p.rim_thickness * 1e3) + " mm",
-                           "< 0.95 root radius = " + to_string_g(0.95 * rf * 1e3) + " mm",
-                           "the rim leaves no material");
-      }
-    else if (p.model == GearMeshParameters::Model::sector && p.bore_radius == 0)
-      ri = rf - 2.75 * tooth.parameters().rack.module;
-    else
-      ri = p.bore_radius > 0 ? p.bore_radius : 0.5 * rf;
+    const double ri = geometry::rim_inner_radius(tooth, p.bore_radius, p.rim_thickness,
+                                                 p.model == GearMeshParameters::Model::sector);
+    if (p.rim_thickness > 0 && !(ri > 0.05 * rf))
+      throw InputError("Mesh/Rim thickness", to_string_g(p.rim_thickness * 1e3) + " mm",
+                       "< 0.95 root radius = " + to_string_g(0.95 * rf * 1e3) + " mm", "the rim leaves no material");
     if (!(ri > 0 && ri < rf - std::min(p.h_fillet, 0.1 * rf)))
       throw InputError(p.rim_thickness > 0 ? "Mesh/Rim thickness" : "Mesh/Bore radius",
                        to_string_g((p.rim_thickness > 0 ? p.rim_thickness : ri) * 1e3) + " mm",
@@ -160,7 +154,7 @@ namespace gearfem::mesh
     // memory and time of one machine (a full gear of 10000 teeth at the default sizes would
     // need ~1e8 cells): beyond it, stop with the estimate instead of meshing for hours.
     const double limit      = 2e6;
-    const double pi_        = 3.14159265358979323846;
+    const double pi_        = units::pi;
     const double tooth_area = 2.25 * m * pi_ * m / 2;
     const double h_fine     = std::min(contact_size(p, m), p.h_fillet);
     const double fraction   = double(n_teeth) / tooth.teeth();

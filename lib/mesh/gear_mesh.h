@@ -1,7 +1,7 @@
 #pragma once
 // The gear body to mesh, in its own body frame (centre at the origin, tooth 0 axis +y):
 // a full gear (all z teeth, bore) or a sector of N teeth (rim below the root circle,
-// straight radial cut edges; seed 001's 3-tooth model generalised). No deal.II, no gmsh.
+// straight radial cut edges; the 3-tooth model of Siasos 2010 generalised). No deal.II, no gmsh.
 // SI units (m).
 #include "geometry/profile.h"
 #include "mesh/domain.h"

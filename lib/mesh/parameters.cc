@@ -19,8 +19,10 @@ namespace gearfem::mesh
     prm.enter_subsection("Mesh");
     prm.declare_entry("Model", "full gear", Selection("full gear|sector"),
                       "Full gear (all z teeth, bore) or a sector of N teeth with a rim below the "
-                      "root circle and radial cut edges (seed 001's 3-tooth model).");
-    prm.declare_entry("Sector teeth", "3", Integer(), "N, teeth of a sector model. Units: none. Allowed: >= 1.");
+                      "root circle and radial cut edges (the 3-tooth model of Siasos 2010).");
+    prm.declare_entry("Sector teeth", "3", Integer(),
+                      "N, teeth of a sector model. Units: none. Allowed: >= 1 (>= 3 for a contact "
+                      "model: solve, batch, optimise, gearbox).");
     prm.declare_entry("h_contact", "0", Double(),
                       "Element size on the drive flanks (and tip) of the fine teeth; 0: m_n/30 "
                       "(0.1 mm at m 3: six nodes across a Hertz patch, STE ripple below 0.1 %, "

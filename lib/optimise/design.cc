@@ -1,5 +1,6 @@
-// Seed 003 designs: parametrisation, start points, evaluation with named constraints.
+// Koronaios 2021 designs: parametrisation, start points, evaluation with named constraints.
 #include "optimise/design.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "geometry/conjugate.h"
@@ -33,7 +34,7 @@ namespace gearfem::optimise
         : m_(m)
       {}
       double t_begin() const override { return 0.0; }
-      double t_end() const override { return 0.5 * M_PI * m_; }
+      double t_end() const override { return 0.5 * units::pi * m_; }
       Vec2 point(double t) const override { return Vec2(t, m_ * std::cos(2 * t / m_)); }
       Vec2 d1(double t) const override { return Vec2(1.0, -2 * std::sin(2 * t / m_)); }
       Vec2 d2(double t) const override { return Vec2(0.0, -4 / m_ * std::cos(2 * t / m_)); }
@@ -61,7 +62,7 @@ namespace gearfem::optimise
     Involute involute_of(const PairData &p)
     {
       const double a = p.pressure_angle, r = p.r01();
-      return {r * std::cos(a), M_PI * p.module / 2 / (2 * r) + std::tan(a) - a};
+      return {r * std::cos(a), units::pi * p.module / 2 / (2 * r) + std::tan(a) - a};
     }
 
     /// Start of active profile on the involute (gear-2 tip circle on the line of action) [m].
@@ -125,7 +126,7 @@ namespace gearfem::optimise
   std::vector<double> Design::default_start() const
   {
     if (kind_ == DesignKind::case1_rack)
-      return {M_PI / 8, M_PI / 4, 0.0, 3 * M_PI / 8};
+      return {units::pi / 8, units::pi / 4, 0.0, 3 * units::pi / 8};
     if (kind_ != DesignKind::case2_flank)
       return {};
     // Least-squares fit of P0..P3 (P4 fixed at the tip point) to the involute, parameters
@@ -158,7 +159,7 @@ namespace gearfem::optimise
       throw InputError("Optimise/Start point", std::to_string(x.size()) + " coordinates",
                        std::to_string(n_free()) + " for " + to_string(kind_));
     if (kind_ == DesignKind::case1_rack)
-      return {Vec2(0, 1), Vec2(x[0], 1), Vec2(x[1], x[2]), Vec2(x[3], -1), Vec2(M_PI / 2, -1)};
+      return {Vec2(0, 1), Vec2(x[0], 1), Vec2(x[1], x[2]), Vec2(x[3], -1), Vec2(units::pi / 2, -1)};
     if (kind_ == DesignKind::case2_flank)
       return {Vec2(x[0], x[1]), Vec2(x[2], x[3]), Vec2(x[4], x[5]), Vec2(x[6], x[7]), tip_point_};
     return {};
@@ -172,7 +173,7 @@ namespace gearfem::optimise
         case DesignKind::involute:
           {
             const double ta = std::tan(pair_.pressure_angle), h = pair_.addendum * m;
-            auto u = [&](double v) { return M_PI * m / 4 - v * ta; };
+            auto u = [&](double v) { return units::pi * m / 4 - v * ta; };
             return std::make_shared<geometry::LineSegment>(Vec2(u(h), h), Vec2(u(-h), -h));
           }
         case DesignKind::sinusoid: return std::make_shared<SinusoidRack>(m);

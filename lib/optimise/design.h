@@ -1,5 +1,5 @@
 #pragma once
-// Seed 003 (Koronaios, NTUA 2021) tooth-profile designs: the two B-spline cases, their
+// Koronaios (NTUA 2021) tooth-profile designs: the two B-spline cases, their
 // free coordinates, objectives and constraints, and the two reference profiles (involute,
 // sinusoidal rack). SI inside (m); design vectors in module units. No deal.II.
 //
@@ -18,6 +18,7 @@
 //  - The x in 2.5 int (1/R)^2 dx: the flank abscissa in position 2 (the tooth turned two
 //    pitches anticlockwise), from the start of active profile to the tip, in mm.
 #include "geometry/pair.h"
+#include "base/units.h"
 #include "optimise/kinematics.h"
 
 #include <optional>
@@ -26,12 +27,12 @@
 
 namespace gearfem::optimise
 {
-  /// The pair (seed 003: 19/55, m 2.5 mm, standard addendum, reference centre distance).
+  /// The pair (Koronaios 2021: 19/55, m 2.5 mm, standard addendum, reference centre distance).
   struct PairData
   {
     int z1 = 19, z2 = 55;
     double module = 2.5e-3;                    ///< m [m]
-    double pressure_angle = 20.0 * M_PI / 180; ///< of the involute reference [rad]
+    double pressure_angle = 20.0 * units::deg; ///< of the involute reference [rad]
     double addendum = 1.0;                     ///< h_a* (tip circles r + h_a* m)
     double dedendum = 1.25;                    ///< h_f* of the generating cutter (case 2 geometry)
     double root_radius = 0.25;                 ///< rho_fP* of the cutter tip (case 2 geometry)

@@ -1,6 +1,7 @@
-// Evaluation of one seed 003 design: sampled range, statistics, objective, constraints and
+// Evaluation of one Koronaios 2021 design: sampled range, statistics, objective, constraints and
 // gearfem's design checks (see design.h).
 #include "base/errors.h"
+#include "base/units.h"
 #include "optimise/design.h"
 
 #include <algorithm>
@@ -141,10 +142,10 @@ namespace gearfem::optimise
         Kmin = std::min(Kmin, q.K), Kmax = std::max(Kmax, q.K);
       }
     ev.stats         = statistics(kap);
-    ev.contact_ratio = (Kmax - Kmin) / (M_PI * m);
+    ev.contact_ratio = (Kmax - Kmin) / (units::pi * m);
     ev.start_radius  = ev.samples.front().r1;
     // int (1/R)^2 dx, x the flank abscissa in position 2 [mm], trapezoidal over the samples.
-    const double turn = 4 * M_PI / pair_.z1;
+    const double turn = 4 * units::pi / pair_.z1;
     for (std::size_t i = 0; i + 1 < ev.samples.size(); ++i)
       {
         const double xa = rotate(fl->point(ev.samples[i].t), turn).x() * 1e3;

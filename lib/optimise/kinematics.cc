@@ -1,6 +1,7 @@
 // Equivalent curvature from the pinion flank by involutisation and Euler-Savary; see
 // kinematics.h for the conventions and docs/optimise.md for the derivation.
 #include "optimise/kinematics.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -40,8 +41,8 @@ namespace gearfem::optimise
       throw SolverError("flank point at radius " + to_string_g(G.norm() * 1e3) +
                         " mm: its normal cannot pass through the pitch point (|G.G'| >= r01 |G'|)");
     const double beta = std::atan2(G1.y(), G1.x()), as = std::asin(w);
-    const double ta = std::remainder(beta - as, 2.0 * M_PI);
-    const double tb = std::remainder(beta - M_PI + as, 2.0 * M_PI);
+    const double ta = std::remainder(beta - as, 2.0 * units::pi);
+    const double tb = std::remainder(beta - units::pi + as, 2.0 * units::pi);
     // Of the two turns that put the normal through C, the contact is the one that turns the
     // outward normal towards gear 2 (n.y > 0); the other touches with the back of the flank.
     const Vec2 n  = outward_sign_ * Vec2(G1.y(), -G1.x()) / L;

@@ -1,6 +1,6 @@
 #pragma once
 // Equivalent curvature along the path of contact of a conjugate pair, from the pinion flank
-// alone (seed 003, Koronaios 2021, ch. 3; Euler-Savary). SI units (m, 1/m, rad).
+// alone (Koronaios 2021, ch. 3; Euler-Savary). SI units (m, 1/m, rad).
 //
 // Frame: the pinion (gear 1) body frame of lib/geometry: centre at the origin, tooth 0 axis
 // +y, the flank on the x > 0 (coast) side; the pitch point is C = (0, r01) and the gear
@@ -79,7 +79,7 @@ namespace gearfem::optimise
   };
   Statistics statistics(const std::vector<double> &values);
 
-  /// How the samples are spaced (seed 003 digest, section 2: fixed by two checks).
+  /// How the samples are spaced (fixed by two checks against Koronaios 2021).
   enum class Sampling
   {
     pinion_radius, ///< uniform in pinion radius (the involute rows of Table 6.1)

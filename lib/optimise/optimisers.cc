@@ -1,4 +1,4 @@
-// Steepest descent with golden-section line search (seed 003) and the NLopt methods.
+// Steepest descent with golden-section line search (Koronaios 2021) and the NLopt methods.
 #include "optimise/optimisers.h"
 
 #include "base/errors.h"
@@ -322,7 +322,7 @@ namespace gearfem::optimise
       opt.set_maxeval(o.max_evaluations);
       if (!mi.gradient && mi.alg != nlopt::GN_ISRES && mi.alg != nlopt::GN_CRS2_LM && mi.alg != nlopt::GN_ESCH)
         {
-          // COBYLA, BOBYQA: first steps of a fraction of the box (seed 003: 5 % of its width,
+          // COBYLA, BOBYQA: first steps of a fraction of the box (Koronaios 2021: 5 % of its width,
           // i.e. 10 % of the half-width `Bound`).
           std::vector<double> step(x.size());
           for (std::size_t i = 0; i < x.size(); ++i)

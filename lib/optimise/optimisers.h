@@ -1,5 +1,5 @@
 #pragma once
-// Optimisers for the seed 003 designs: the thesis' steepest descent with a golden-section
+// Optimisers for the Koronaios 2021 designs: the thesis' steepest descent with a golden-section
 // line search (Koronaios 2021, ch. 4-6), and NLopt's SLSQP, MMA (gradient-based, forward
 // finite differences), COBYLA, BOBYQA (derivative-free), ISRES, CRS2, ESCH (global).
 // Every evaluation is recorded; the result is the best feasible design seen. No deal.II.

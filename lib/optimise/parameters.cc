@@ -1,8 +1,10 @@
 // ParameterHandler bindings of `gearfem optimise` (see parameters.h).
 #include "optimise/parameters.h"
+#include "geometry/parameters.h"
+#include "base/units.h"
 
 #include "base/errors.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "optimise/relief_parameters.h"
 #include "params/checked.h"
 #include "post/parameters.h"
@@ -23,26 +25,25 @@ namespace gearfem::optimise
   {
     prm.enter_subsection("Optimise");
     prm.declare_entry("Problem", "profile", Selection("profile|tip relief"),
-                      "profile: seed 003's B-spline tooth (the entries below, docs/optimise.md); tip relief: "
+                      "profile: the B-spline tooth of Koronaios 2021 (the entries below, docs/optimise.md); tip relief: "
                       "amount and length of tip relief for minimum STE with the FE model in the loop "
                       "(subsection Tip relief, and the gearfem solve sections Rack ... Solve). Units: none.");
     prm.declare_entry("Case", "case 2", Selection("case 1|case 2"),
-                      "Seed 003 case: 1 = pinion rack B-spline (4 free coordinates), objective max + mean "
+                      "Koronaios 2021 case: 1 = pinion rack B-spline (4 free coordinates), objective max + mean "
                       "+ std of |1/R|; 2 = pinion flank B-spline (8 free coordinates), objective "
                       "2.5 int (1/R)^2 dx + std(1/R) + 0.1/eps. Units: none.");
-    prm.declare_entry("Pinion teeth", "19", Integer(), "z1. Units: none. Allowed: 5 to 10000.");
-    prm.declare_entry("Gear teeth", "55", Integer(), "z2. Units: none. Allowed: 5 to 10000.");
-    prm.declare_entry("Module", "2.5", Double(), "m. Units: mm. Allowed: > 0.");
-    prm.declare_entry("Pressure angle", "20", Double(),
-                      "Of the involute reference and of the case-2 start fit. Units: deg. Allowed: 10 to 35.");
-    prm.declare_entry("Addendum coefficient", "1", Double(),
-                      "Tip circles r + h_a* m of both gears. Units: multiples of the module. Allowed: 0.5 to 1.5.");
+    geometry::declare_teeth_entry(prm, "Pinion teeth", 19, "z1");
+    geometry::declare_teeth_entry(prm, "Gear teeth", 55, "z2");
+    geometry::declare_module_entry(prm, "Module", 2.5);
+    geometry::declare_pressure_angle_entry(prm);
+    geometry::declare_addendum_entry(prm, "Addendum coefficient",
+                                     "h_a*: tip circles r + h_a* m of both gears; also of the involute reference");
     prm.declare_entry("Dedendum coefficient", "1.25", Double(),
                       "Cutter addendum of the case-2 geometry (the recovered rack must stay above it). "
                       "Units: multiples of the module.");
     prm.declare_entry("Root radius coefficient", "0.25", Double(),
                       "Cutter tip radius of the case-2 geometry. Units: multiples of the module.");
-    prm.declare_entry("Face width", "20", Double(), "Written to optimum.prm. Units: mm. Allowed: > 0.");
+    geometry::declare_face_width_entry(prm, "Face width", 20, "b, written to optimum.prm");
     prm.declare_entry("Samples", "201", Integer(),
                       "Points along the active flank in each evaluation. Units: none. Allowed: 11 to 1e6.");
     prm.declare_entry("Report samples", "2001", Integer(),
@@ -83,7 +84,7 @@ namespace gearfem::optimise
     prm.declare_entry("Population", "0", Integer(), "Global methods; 0 = NLopt's default. Units: none.");
     prm.leave_subsection();
     // The case the tip-relief problem optimises (`gearfem solve` sections).
-    contact::declare_gear_contact_input(prm);
+    solve::declare_gear_contact_input(prm);
     post::declare_post_parameters(prm);
   }
 
@@ -134,12 +135,11 @@ namespace gearfem::optimise
     s.pair.z1                = params::get_integer(prm, "Pinion teeth");
     s.pair.z2                = params::get_integer(prm, "Gear teeth");
     s.pair.module            = params::get_double(prm, "Module") * 1e-3;
-    s.pair.pressure_angle    = params::get_double(prm, "Pressure angle") * M_PI / 180;
+    s.pair.pressure_angle    = params::get_double(prm, "Pressure angle") * units::deg;
     s.pair.addendum          = params::get_double(prm, "Addendum coefficient");
     s.pair.dedendum          = params::get_double(prm, "Dedendum coefficient");
     s.pair.root_radius       = params::get_double(prm, "Root radius coefficient");
     s.face_width             = params::get_double(prm, "Face width") * 1e-3;
-    require_greater("Optimise/Face width", s.face_width * 1e3, 0.0, "mm");
     s.eval.samples           = params::get_integer(prm, "Samples");
     s.report_samples         = params::get_integer(prm, "Report samples");
     s.eval.min_contact_ratio = params::get_double(prm, "Minimum contact ratio");

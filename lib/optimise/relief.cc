@@ -1,6 +1,7 @@
 // Tip-relief optimisation with the FE model in the loop (see relief.h): the problem, the
 // model built once and re-targeted per evaluation, the optimiser and grid runs.
 #include "optimise/relief.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "base/progress.h"
@@ -165,7 +166,7 @@ namespace gearfem::optimise
     std::complex<double> c(0, 0);
     for (std::size_t k = 0; k < n; ++k)
       {
-        c += ste[k] * std::polar(1.0, -2 * M_PI * double(k) / double(n));
+        c += ste[k] * std::polar(1.0, -2 * units::pi * double(k) / double(n));
         mean += ste[k] / double(n);
       }
     h1 = 2 * std::abs(c) / double(n);
@@ -191,7 +192,7 @@ namespace gearfem::optimise
       }
   }
 
-  ReliefModel::ReliefModel(const geometry::GeometryInput &geometry, const contact::GearContactInput &in,
+  ReliefModel::ReliefModel(const geometry::GeometryInput &geometry, const solve::GearContactInput &in,
                            const ReliefProblem &problem)
     : geometry_(geometry), problem_(problem)
   {

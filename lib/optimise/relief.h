@@ -1,5 +1,5 @@
 #pragma once
-// Robust tip-relief optimisation (issue 15, section 4) with the FE model in the loop.
+// Robust tip-relief optimisation with the FE model in the loop.
 //
 // Design variables: amount C_a and length L (along the line of action, from the tip) of a
 // linear or parabolic tip relief, the same on both gears (2 variables) or per gear (4).
@@ -13,7 +13,7 @@
 // re-factorised, and the flexibility columns cached by earlier evaluations are re-used.
 // The optimisers are those of optimisers.h on the variables scaled to [0, 1].
 // SI inside; micrometres for STE figures and objectives.
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "geometry/parameters.h"
 #include "optimise/optimisers.h"
 
@@ -107,7 +107,7 @@ namespace gearfem::optimise
     /// `in`: the parsed `gearfem solve` sections (mesh, material, FE, contact; its pair and
     /// Solve section are not used). `geometry`: the macro-geometry (its reliefs ignored).
     /// Meshes and factorises the unrelieved gears (Contact/Micro-geometry is forced to gap).
-    ReliefModel(const geometry::GeometryInput &geometry, const contact::GearContactInput &in,
+    ReliefModel(const geometry::GeometryInput &geometry, const solve::GearContactInput &in,
                 const ReliefProblem &problem);
     ~ReliefModel();
     /// STE cycles of design x [m] at the problem's torques; a solver failure gives ok = false.
@@ -197,7 +197,7 @@ namespace gearfem::optimise
     ReliefProblem problem;
     OptimiserSettings optimiser;
     geometry::GeometryInput geometry;
-    std::shared_ptr<const contact::GearContactInput> input;
+    std::shared_ptr<const solve::GearContactInput> input;
     /// The `gearfem solve` case of design x (a complete .prm text).
     std::function<std::string(const std::vector<double> &)> solve_case;
   };

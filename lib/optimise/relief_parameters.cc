@@ -4,7 +4,7 @@
 #include "optimise/parameters.h"
 
 #include "base/errors.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "params/checked.h"
 #include "post/parameters.h"
 
@@ -121,7 +121,7 @@ namespace gearfem::optimise
       std::string error;
       try
         {
-          (void)contact::parse_gear_contact_input(prm);
+          (void)solve::parse_gear_contact_input(prm);
         }
       catch (const InputError &e)
         {
@@ -142,10 +142,10 @@ namespace gearfem::optimise
     read_problem(prm, s.problem);
     s.optimiser = read_optimiser(prm);
     s.geometry  = geometry::parse_geometry_parameters(prm);
-    auto input  = std::make_shared<contact::GearContactInput>(contact::parse_gear_contact_input(prm));
+    auto input  = std::make_shared<solve::GearContactInput>(solve::parse_gear_contact_input(prm));
     const auto &sv = input->solve;
-    if (sv.positions != contact::SolveParameters::Positions::cycle)
-      throw InputError("Solve/Positions", sv.positions == contact::SolveParameters::Positions::named ? "named" : "list",
+    if (sv.positions != solve::SolveParameters::Positions::cycle)
+      throw InputError("Solve/Positions", sv.positions == solve::SolveParameters::Positions::named ? "named" : "list",
                        "cycle", "the objective is a measure of the STE over one mesh cycle");
     if (std::abs(sv.pitches - 1.0) > 1e-12)
       throw InputError("Solve/Pitches", to_string_g(sv.pitches), "1", "the objective is measured over one mesh cycle");
@@ -162,7 +162,7 @@ namespace gearfem::optimise
     const ReliefProblem problem = s.problem;
     s.solve_case = [case_text = text.str(), problem](const std::vector<double> &x) {
       dealii::ParameterHandler out;
-      contact::declare_gear_contact_input(out);
+      solve::declare_gear_contact_input(out);
       post::declare_post_parameters(out);
       out.parse_input_from_string(case_text, "", true); // skips the Optimise and Optimiser sections
       for (int i = 0; i < 2; ++i)

@@ -1,5 +1,7 @@
-// A seed 003 optimisation study: run the optimisers, re-evaluate, write the report files.
+// A Koronaios 2021 optimisation study: run the optimisers, re-evaluate, write the report files.
 #include "optimise/study.h"
+#include "geometry/limits.h"
+#include "base/units.h"
 
 #include "base/atomic_file.h"
 #include "base/errors.h"
@@ -38,11 +40,12 @@ namespace gearfem::optimise
     require_range("Optimise/Samples", s.eval.samples, 11, 1000000);
     require_range("Optimise/Report samples", s.report_samples, 11, 1000000);
     require_range("Optimise/Minimum contact ratio", s.eval.min_contact_ratio, 0.0, 5.0);
-    require_range("Optimise/Pinion teeth", s.pair.z1, 5, 10000);
-    require_range("Optimise/Gear teeth", s.pair.z2, 5, 10000);
-    require_greater("Optimise/Module", s.pair.module * 1e3, 0.0, "mm");
-    require_range("Optimise/Pressure angle", s.pair.pressure_angle * 180 / M_PI, 10.0, 35.0, "deg");
-    require_range("Optimise/Addendum coefficient", s.pair.addendum, 0.5, 1.5);
+    geometry::limits::check_teeth("Optimise/Pinion teeth", s.pair.z1);
+    geometry::limits::check_teeth("Optimise/Gear teeth", s.pair.z2);
+    geometry::limits::check_module("Optimise/Module", s.pair.module);
+    geometry::limits::check_pressure_angle("Optimise/Pressure angle", s.pair.pressure_angle);
+    geometry::limits::check_addendum("Optimise/Addendum coefficient", s.pair.addendum);
+    geometry::limits::check_face_width("Optimise/Face width", s.face_width);
     if (s.eval.start_radius != 0)
       require_range("Optimise/Start radius", s.eval.start_radius * 1e3, s.pair.r01() * (1 - 0.3) * 1e3,
                     s.pair.tip_radius(1) * 1e3, "mm");
@@ -136,7 +139,7 @@ namespace gearfem::optimise
     }
     {
       AtomicOutputFile f(dir / "summary.md");
-      f.stream() << "# Seed 003 " << to_string(s.kind) << " optimisation\n\n";
+      f.stream() << "# Koronaios 2021 " << to_string(s.kind) << " optimisation\n\n";
       print_summary(s, r, f.stream());
       f.commit();
     }
@@ -183,7 +186,7 @@ namespace gearfem::optimise
       const bool        c2 = s.kind == DesignKind::case2_flank;
       std::ostream     &o  = f.stream();
       o << (c2 ? "# gearfem solve\n" : "# gearfem profile (case 1: see the note below)\n");
-      o << "# Seed 003 " << to_string(s.kind) << " optimum by " << to_string(best.method) << " (gearfem optimise): objective "
+      o << "# Koronaios 2021 " << to_string(s.kind) << " optimum by " << to_string(best.method) << " (gearfem optimise): objective "
         << g(r.runs[r.best_run].optimum.objective) << " 1/mm.\n";
       const auto cp = d.control_points(best.x_best);
       if (!c2)
@@ -193,7 +196,7 @@ namespace gearfem::optimise
              "# contact reverses (several points of one flank in contact at once, as for the sinusoid)\n"
              "# or its contact ratio is below 1: see docs/optimise.md.\n";
       o << "subsection Rack\n  set Module                  = " << g(s.pair.module * 1e3, 10)
-        << "\n  set Pressure angle          = " << g(s.pair.pressure_angle * 180 / M_PI, 10)
+        << "\n  set Pressure angle          = " << g(s.pair.pressure_angle / units::deg, 10)
         << "\n  set Addendum coefficient    = " << g(c2 ? s.pair.addendum : cp.front().y(), 10)
         << "\n  set Dedendum coefficient    = " << g(c2 ? s.pair.dedendum : -cp.back().y(), 10)
         << "\n  set Root radius coefficient = " << g(s.pair.root_radius, 10)
@@ -205,7 +208,7 @@ namespace gearfem::optimise
         o << "subsection Gear " << i << "\n  set Number of teeth = " << (i == 1 ? s.pair.z1 : s.pair.z2)
           << "\n  set Face width      = " << g(s.face_width * 1e3, 10)
           << (c2 ? "" : "\n  set Tip shortening coefficient = 0.05") << "\nend\n";
-      if (c2) // the FE check of seed 003 (ch. 7), as inputs/seed003_opt_fe_involute.prm
+      if (c2) // the FE check of Koronaios 2021 (ch. 7), as inputs/seed003_opt_fe_involute.prm
         o << "subsection Mesh\n  set Model        = sector\n  set Sector teeth = 3\n  set h_fillet     = 0.15\n"
              "  set h_body       = 2\nend\nsubsection Solve\n  set Torques             = 5\n"
              "  set Number of positions = 20\n  set VTU                 = none\nend\n";

@@ -1,5 +1,5 @@
 #pragma once
-// A seed 003 optimisation study: the case, its evaluation settings, the optimisers to run
+// A Koronaios 2021 optimisation study: the case, its evaluation settings, the optimisers to run
 // from one start point, and the report (tables, CSV files, optimum.prm). No deal.II.
 #include "optimise/optimisers.h"
 

@@ -3,7 +3,7 @@
 // these functions, which convert with the one strict conversion of base/number.h and throw
 // gearfem::InputError (exit status 2) naming the entry, the value and the allowed range.
 //
-// Why deal.II 9.4 alone is not enough (found with tests/fuzz, issue 13):
+// Why deal.II 9.4 alone is not enough (found with tests/fuzz):
 //  1. ParameterHandler::parse_input()/set() do not check a value against its pattern when
 //     the value contains a '{': such values are reserved for MultipleParameterLoop variants
 //     ("{ 1 | 2 }", "{{ ... }}"), which are expanded later. So "${X}" (or "{", "{1|2}") is

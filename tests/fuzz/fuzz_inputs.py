@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Mutation fuzzer for gearfem input files (issue 13).
+"""Mutation fuzzer for gearfem input files.
 
 Mutates every inputs/*.prm with a fixed seed and runs each mutant through
 `gearfem <command> --validate`; a fraction also gets a real run (only for the commands

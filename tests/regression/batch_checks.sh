@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Quick checks of `gearfem batch` (issue 18, section 6) on the tiny study of data/batch:
+# Quick checks of `gearfem batch` on the tiny study of data/batch:
 # sector models of a 20/40 pair, 3 designs x 2 torques x 5 positions.
 #   batch_checks.sh mpi     GEARFEM SRC_DIR  mpirun -np 2 equals the serial run; the numbers of
 #                                            one design equal `gearfem solve` of that design

@@ -6,7 +6,7 @@
 #   cli_checks.sh validate GEARFEM SRC_DIR    every inputs/*.prm passes --validate
 #   cli_checks.sh basics   GEARFEM SRC_DIR    --help, --version, unknown command, missing file
 #   cli_checks.sh tablefile GEARFEM SRC_DIR   dynamics with HDF5 mesh tables written by h5py
-#   cli_checks.sh seed001  GEARFEM SRC_DIR    gearfem rate reproduces seed 001's AGMA tables
+#   cli_checks.sh seed001  GEARFEM SRC_DIR    gearfem rate reproduces the AGMA tables of Siasos 2010
 #   cli_checks.sh resume   GEARFEM SRC_DIR    a solve killed with SIGKILL mid-sweep, resumed
 #                                             with --resume, equals an uninterrupted run; the
 #                                             solve + calibrate numbers equal the reference
@@ -51,7 +51,7 @@ case $mode in
     ls -A "$work/out" | grep -q tmp && fail "temporary file left behind"
     ;;
   resume)
-    # Issue 12: `gearfem solve` journals every finished position; a run killed with SIGKILL
+    # `gearfem solve` journals every finished position; a run killed with SIGKILL
     # continues with --resume and its results equal those of an uninterrupted run (every
     # column but the wall time, to 1e-12 relative: the warm start is restored exactly).
     case=$arg/tests/regression/data/resume_sweep.prm
@@ -97,9 +97,8 @@ for name in ("sweep.csv", "pairs.csv", "pressure.csv", "line_of_action.csv", "pa
     print(name, len(ra) - 1, "rows equal")
 PY
     [ ! -e "$work/kill/solve.journal" ] || fail "journal left after the resumed run completed"
-    # The library pipeline gives the numbers the CLI gave before it moved into lib/loading,
-    # lib/post and lib/calibration (issue 12): the reference files were written by gearfem
-    # at commit 1606a32 (solve of resume_sweep.prm, calibrate of calibrate_sweep.prm).
+    # The library pipeline (lib/loading, lib/solve, lib/post, lib/calibration) reproduces the
+    # reference files, which were written by gearfem at commit 1606a32 (solve of resume_sweep.prm, calibrate of calibrate_sweep.prm).
     sed -e "s|@RESULTS@|$work/full/results.h5|" "$arg/tests/regression/data/calibrate_sweep.prm" > "$work/cal.prm"
     "$gearfem" calibrate "$work/cal.prm" --output-dir "$work/cal" > "$work/cal.log" 2>&1 || { cat "$work/cal.log"; fail "calibrate failed"; }
     cp "$work/cal/calibration.csv" "$work/cal/ste_table.csv" "$work/full/"
@@ -188,8 +187,8 @@ PY
     check_refused missing nosuchfile "" 50 200 "an existing HDF5"
     ;;
   seed001)
-    # Seed 001 (Siasos 2010) tables 6.2-1..3, 23/69 m 4, with the thesis' K_H = 1.1546: all
-    # twelve AGMA stresses within 1 % (issue 5: "gearfem rate reproduces the seed 001 tables").
+    # Siasos 2010 tables 6.2-1..3, 23/69 m 4, with the thesis' K_H = 1.1546: all twelve AGMA
+    # stresses within 1 % ("gearfem rate reproduces the tables of Siasos 2010").
     "$gearfem" rate "$arg/inputs/seed001_23_69_rate_thesis_kh.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
       { cat "$work/stdout"; fail "rate run failed"; }
     grep "AGMA sigma_H" "$work/stdout"
@@ -197,13 +196,13 @@ PY
          /AGMA sigma_H/ { n++; gsub(",", ""); h = $8; f1 = $10; f2 = $12
            for (k = 1; k <= 3; k++) { v = (k == 1 ? h : k == 2 ? f1 : f2); r = (k == 1 ? H[n] : k == 2 ? F1[n] : F2[n])
              e = (v - r) / r; if (e < 0) e = -e; if (e > m) m = e; if (e > 0.01) { print "off by " 100 * e " %: " v " vs " r; bad++ } } }
-         END { printf "12 AGMA stresses, max deviation from seed 001: %.3f %%\n", 100 * m; exit (bad > 0 || n != 4) }' "$work/stdout" ||
-      fail "seed 001 AGMA tables not reproduced within 1 %"
+         END { printf "12 AGMA stresses, max deviation from Siasos 2010: %.3f %%\n", 100 * m; exit (bad > 0 || n != 4) }' "$work/stdout" ||
+      fail "Siasos 2010 AGMA tables not reproduced within 1 %"
     ;;
   gearbox)
-    # Seed 001 (Siasos 2010) tables 9.4-5/6 through the CLI (issue 16): the damage chain from
+    # Siasos 2010 tables 9.4-5/6 through the CLI: the damage chain from
     # the thesis' tabulated stresses gives the stage-1 sun life 3.6608 spectra and the planet
-    # 19.2193 (0.2 %: stress rounding, see tests/unit/analytical/test_gearbox.cc), no damage
+    # 19.2193 (0.2 %: stress rounding, see tests/unit/gearbox/test_gearbox.cc), no damage
     # elsewhere; every output file is written and no temporary file is left.
     "$gearfem" gearbox "$arg/inputs/seed001_gearbox_thesis_stresses.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
       { cat "$work/stdout"; fail "gearbox run failed"; }
@@ -252,7 +251,7 @@ PY
       $1 == "Stage 1" && $2 == "sun" && $3 == "contact" { s = $7 }
       $1 == "Stage 1" && $2 == "planet" && $3 == "contact" && $4 ~ /sun-side/ { p = $7 }
       END { printf "sun %s, planet %s spectra, %d damaged entries\n", s, p, n; exit !(ok(s, 3.6608) && ok(p, 19.2193) && n == 2) }' \
-      "$work/out/gearbox_life.csv" || fail "seed 001 lives not reproduced"
+      "$work/out/gearbox_life.csv" || fail "Siasos 2010 lives not reproduced"
     ;;
   demo)
     "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||

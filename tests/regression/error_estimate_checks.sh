@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI check of `Solve/Error estimate = true` (issue 14 §3), quick: 3-tooth sectors of the
+# CLI check of `Solve/Error estimate = true`, quick: 3-tooth sectors of the
 # Parker pair at 200 N m, sweep over the named points B and D, coarse contact mesh.
 #   error_estimate_checks.sh GEARFEM
 # Checks: exit 0; run.json is valid JSON with an `error_estimate` member (3 samples, all

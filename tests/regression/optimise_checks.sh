@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI checks of `gearfem optimise` (issue 15; registered in CMakeLists.txt beside this file).
+# CLI checks of `gearfem optimise` (registered in CMakeLists.txt beside this file).
 #   optimise_checks.sh bad   GEARFEM FILE.prm  exit 2, the parameter of its "# expect:" line named,
 #                                              no output left, --validate also exits 2
 #   optimise_checks.sh short GEARFEM SRC_DIR   a 200-evaluation case-1 COBYLA run: exit 0, every

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CalculiX peer comparison on the FZG type C pair (issue 14, section 2; README.md): gearfem
+# CalculiX peer comparison on the FZG type C pair (README.md): gearfem
 # solve on inputs/fzg_c_ccx.prm (9 positions over one pitch that bracket both transitions,
 # LS7 and LS9), then ccx (calculix-ccx, single-threaded) on the same gmsh meshes (CPS8, plane
 # stress) at the same positions with gearfem's pinion rotations prescribed, at the penalty

@@ -8,7 +8,7 @@ import sys
 
 from vcheck import Checks, num, strip_columns, write_if_changed
 
-ISSUE4 = "issue 4 §6: every hard case converges (or stops with a diagnosis)"
+CONVERGE = "contact-solver requirement: every hard case converges (or stops with a diagnosis)"
 
 
 def contact_ratio(z, m, ha, a):
@@ -41,7 +41,7 @@ def main():
     c.at_least("hard-case sweeps in the table", len(data), 10, "validate_hard_cases.cc (10 sweeps)")
     for name, r in data.items():
         done, n = (int(x) for x in r[2].split("/"))
-        c.true(f"converged: {name}", done == n and n > 0, r[2], "all positions", ISSUE4)
+        c.true(f"converged: {name}", done == n and n > 0, r[2], "all positions", CONVERGE)
         c.at_most(f"torque balance: {name}", num(r[10]), 1e-6, "VALIDATION.md: moment of contact forces = T1 to 1e-6")
 
     def get(key):
@@ -49,7 +49,7 @@ def main():
         return hit[0] if hit else None
     light, big = get("1 N m"), get("3x nominal")
     c.at_least("1 N m: pairs reported unresolved", num(light[9]) if light else None, 1,
-               "issue 4 §6: a patch below the element size is reported, not printed as Hertz")
+               "contact-solver requirement: a patch below the element size is reported, not printed as Hertz")
     c.at_least("3 x 340 N m: pairs in contact at once", num(big[4]) if big else None, 3,
                "extended (tip-corner) contact beyond A/E at 3 x load (README)")
     c.at_least("3 x 340 N m: corner-contact pairs", num(big[8]) if big else None, 1, "same")
@@ -63,7 +63,7 @@ def main():
     c.true("z 14/50 without shift refused, naming the parameter",
            any(k.startswith("z 14/50") and "Tip shortening coefficient" in k for k in rows),
            "refused" if any(k.startswith("z 14/50") for k in rows) else "missing",
-           "refused (interference)", "undercut/interference: seed 001 Z_min (SEEDS.md)")
+           "refused (interference)", "undercut/interference: Siasos 2010 Z_min (SEEDS.md)")
     plain, long_relief = get("unmodified"), get("long linear tip relief")
     if plain and long_relief:
         c.at_most("long tip relief: STE p-p / unmodified STE p-p, 340 N m", round(num(long_relief[6]) / num(plain[6]), 4),

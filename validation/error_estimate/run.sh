@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Per-run discretisation-error estimate (`Solve/Error estimate`, issue 14 section 3; see
+# Per-run discretisation-error estimate (`Solve/Error estimate`; see
 # README.md) on the demo (inputs/demo.prm: 50/50 m 3, 200 N m, h_contact 0.08 mm):
 #   1. the demo with the estimate on, one run: the sweep and the estimate timed in the same
 #      process (run.json: run_sweep_seconds, seconds_setup + seconds_solve);
 #   2. the references at the estimate's sample positions only (Positions = list, roll angles
-#      read from run.json): h_contact 0.05 mm (the issue's reference) and 0.025 mm, the other
+#      read from run.json): h_contact 0.05 mm (the requirement's reference) and 0.025 mm, the other
 #      fine sizes (h_fillet) scaled by the same factor h_ref/0.08, as the estimate's refined
 #      level scales them by 1/2;
 #   3. check.py: estimated error against Q_reference - Q_h per sample and quantity, within a
-#      factor of 2 of the true error (the 0.025 mm reference), the issue's 0.05 mm comparison
+#      factor of 2 of the true error (the 0.025 mm reference), the requirement's 0.05 mm comparison
 #      reported beside it (README: why); ends with `error_estimate: PASS` or `FAIL`.
 # About 3 min on 2 cores (10 min when the machine is shared).
 set -euo pipefail

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Extreme but legal designs (issue 13, item 4): each case changes one entry of base.prm and
-# runs one command; the outcome must be a result (exit 0) or a named reason (exit 2, or 3
-# for a solver failure), never NaN, a hang or a crash. Prints the markdown table recorded
-# in validation/RESULTS.md (also results/table.md, with the times) and ends with PASS or FAIL.
-# Reference: the expected outcome of each design (README of issue 13 in RESULTS.md): a
-# legal design gives a result, an out-of-range one a named stop; no tolerance (exit status).
+# Extreme but legal designs (README.md; input-robustness requirement): each case changes one
+# entry of base.prm and runs one command; the outcome must be a result (exit 0) or a named
+# reason (exit 2, or 3 for a solver failure), never NaN, a hang or a crash. Prints the
+# markdown table recorded in validation/RESULTS.md (also results/table.md, with the times)
+# and ends with PASS or FAIL.
+# Reference: the expected outcome of each design (README.md; section "extreme_designs" of
+# RESULTS.md): a legal design gives a result, an out-of-range one a named stop; no tolerance
+# (exit status).
 #   validation/extreme_designs/run.sh [gearfem] [--quick]
 # --quick skips the solve runs.
 set -euo pipefail

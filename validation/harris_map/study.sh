@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Harris map (issue 18, section 4) of inputs/harris_map.prm with `gearfem batch`, then
+# Harris map (README.md) of inputs/harris_map.prm with `gearfem batch`, then
 # scripts/plot_batch.py: harris_map.png, design_space.png and the table of minima.
 #   study.sh full    [NP]  the study as written: full gears, 25 mm bores, 12 torques x 40
 #                          positions, reliefs as gap modifications (one factorisation per rank)
@@ -8,8 +8,9 @@
 #   study.sh preview [NP]  3-tooth sector models (rim-clamped), h_contact 0.2 mm, 16 positions:
 #                          the shape of the map in minutes, not its numbers
 # Then check.py checks the full study against Harris (1958) / Tavakoli & Houser (1986), the
-# issue's unrelieved figure, the load-sharing argument for short reliefs and, when
-# out_exact/ exists, the gap route against the exact one; it ends with harris_map: PASS|FAIL.
+# batch-study requirement's unrelieved figure, the load-sharing argument for short reliefs
+# and, when out_exact/ exists, the gap route against the exact one; it ends with
+# harris_map: PASS|FAIL.
 # Not in the quick or long tier: ~25-60 min at np = 2.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)

@@ -72,7 +72,7 @@ def main():
     for (name, method, h), p0 in sorted(p0_by.items()):
         if method == "penalty" and (name, "lagrange", h) in p0_by:
             c.rel(f"p0 penalty/Lagrange, {name}, h {h}", p0, p0_by[(name, "lagrange", h)], TOL_METHODS,
-                  "issue 4: the two methods agree within 0.5 %", " MPa")
+                  "contact-solver requirement: the two methods agree within 0.5 %", " MPa")
     return c.finish()
 
 

@@ -30,7 +30,7 @@ def main():
            f"{len(a)} / {len(b)} points", "equal", "sweep_rk4.prm, sweep_reference.prm")
     diff = max(abs(x[3] - y[3]) / y[3] for x, y in zip(a, b)) if a and len(a) == len(b) else None
     c.at_most("max relative RMS difference, RK4 128 steps/period vs DOPRI5 rtol 1e-12", diff, 1e-3,
-              "VALIDATION.md: integrator against a tight-tolerance reference; issue 6 convergence bound 1e-3")
+              "VALIDATION.md: integrator against a tight-tolerance reference; dynamics convergence requirement 1e-3")
     up, down = [r for r in b if r[0] == 1], [r for r in b if r[0] == -1]
     iu = max(range(1, len(up)), key=lambda i: up[i][3] - up[i - 1][3])
     idn = max(range(1, len(down)), key=lambda i: down[i - 1][3] - down[i][3])

@@ -6,8 +6,8 @@ root stress position by position. Prints the table, writes results/table.md and 
 one PASS or FAIL line (exit 1 on FAIL).
 
 Reference: the exact route (the relieved profiles meshed by gmsh), an independent
-discretisation of the same physics; the tolerances are those of the issue (STE 0.5 %,
-root stress 1 %)."""
+discretisation of the same physics; the tolerances are those of the micro-geometry
+requirement (STE 0.5 %, root stress 1 %)."""
 import argparse
 import csv
 import os

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Micro-geometry as a gap modification (issue: MPI batch, section 2): the Parker pair with
-# linear tip relief on both gears, long and short, at the design load, meshed with the
-# relief (exact) and applied as an initial separation on the unmodified mesh. check.py
-# compares STE and root stress position by position and ends with PASS or FAIL.
+# Micro-geometry as a gap modification (README.md): the Parker pair with linear tip relief
+# on both gears, long and short, at the design load, meshed with the relief (exact) and
+# applied as an initial separation on the unmodified mesh. check.py compares STE and root
+# stress position by position and ends with PASS or FAIL.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"

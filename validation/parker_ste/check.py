@@ -86,15 +86,15 @@ def check_validation(c, tables, lines):
             levels = [num(x) for x in r[1:5]]  # h 0.4, 0.2, 0.1, 0.05 mm
             for h, v in zip(("0.2", "0.1"), levels[1:3]):
                 c.rel(f"STE at {r[0]}, 340 N m, h {h} mm vs h 0.05 mm", v, levels[3], 0.01,
-                      "converged run (h 0.05 mm); issue 4: a level within 1 %", " um")
+                      "converged run (h 0.05 mm); contact-solver requirement: a level within 1 %", " um")
     else:
         c.true("mesh convergence table", False, "missing", "present", "validate_gear_contact")
     t = table_after(tables, "Penalty against Lagrange", lines)
     vals = {r[0]: num(r[1]) for r in t[1]} if t else {}
     c.at_most("STE penalty/Lagrange - 1, 40 positions, 200 N m", vals.get("STE penalty/Lagrange - 1"), 0.005,
-              "issue 4: penalty and Lagrange within 0.5 %")
+              "contact-solver requirement: penalty and Lagrange within 0.5 %")
     c.at_most("STE penalty x10 / penalty - 1", vals.get("STE penalty x10 / penalty - 1"), 0.005,
-              "issue 4: penalty factor independence within 0.5 %")
+              "contact-solver requirement: penalty factor independence within 0.5 %")
     c.at_most("moment of contact forces about O1 / T1 - 1", vals.get("moment of contact forces about O1 / T1 - 1"),
               1e-6, "VALIDATION.md: torque balance to 1e-6")
     c.at_most("bore reaction moment / T1 - 1", vals.get("bore reaction moment / T1 - 1"), 1e-6,
@@ -106,21 +106,21 @@ def check_validation(c, tables, lines):
     c.at_least("resolved involute pairs compared with Hertz (340 N m, h 0.025 mm)", len(ratios), 10,
                "validate_gear_contact.cc (enough pairs to mean something)")
     c.at_most("max |p_max/p_Hertz - 1| along the path", max((abs(x - 1) for x in ratios), default=None), 0.03,
-              "issue 4: 3 % (Hertz on the local involute radii)")
-    t = table_after(tables, "Seed 001", lines)
+              "contact-solver requirement: 3 % (Hertz on the local involute radii)")
+    t = table_after(tables, "Siasos 2010", lines)  # validate_gear_contact.cc: "### ... pair (Siasos 2010: 23/69, ..."
     digest = {500: 709, 400: 634, 300: 549, 200: 448}  # SEED001_GEARBOX / SEEDS.md note, plane strain
     for r in (t[1] if t else []):
         T = num(r[0])
         ps = hertz_pitch(T, 23, 69, 4e-3, 70e-3, 205e9, 0.3, False)
         pe = hertz_pitch(T, 23, 69, 4e-3, 70e-3, 205e9, 0.3, True)
-        c.abs(f"seed 001 plane-strain Hertz at C, {T:g} N m (closed form here vs digest)", round(pe, 1),
-              digest[int(T)], 0.5, "SEEDS.md seed 001 note (709/634/549/448 MPa, rounded)", " MPa")
-        c.rel(f"seed 001 FE p_max at C, {T:g} N m, h 0.02 mm", num(r[1]), round(ps, 1), 0.03,
-              "plane-stress Hertz (closed form); issue 4: FE converges to Hertz, 3 %", " MPa")
-        c.info(f"seed 001 thesis FEM at C, {T:g} N m", num(r[5]), "—",
+        c.abs(f"Siasos 2010 pair: plane-strain Hertz at C, {T:g} N m (closed form here vs digest)", round(pe, 1),
+              digest[int(T)], 0.5, "Siasos 2010 note in SEEDS.md (709/634/549/448 MPa, rounded)", " MPa")
+        c.rel(f"Siasos 2010 pair: FE p_max at C, {T:g} N m, h 0.02 mm", num(r[1]), round(ps, 1), 0.03,
+              "plane-stress Hertz (closed form); contact-solver requirement: FE converges to Hertz, 3 %", " MPa")
+        c.info(f"Siasos 2010 pair: thesis FEM at C, {T:g} N m", num(r[5]), "—",
                "Siasos 2010 FEM, under-resolved patch (SEEDS.md note); not a reference")
     if not t:
-        c.true("seed 001 table", False, "missing", "present", "validate_gear_contact")
+        c.true("Siasos 2010 pair table", False, "missing", "present", "validate_gear_contact")
     t = table_after(tables, "root stress at HPSTC", lines)
     if t:
         r = t[1][0]

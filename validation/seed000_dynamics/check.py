@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Seed 000 Table 1 cases against the thesis (README.md, "Checks").
+"""Gkimisis 2019 Table 1 cases against the thesis (README.md, "Checks").
 
 Usage: check.py --out <results dir>
 Reads results/<case>.log and results/ricker/<case>.log (gearfem dynamics console) and
@@ -11,7 +11,7 @@ import sys
 
 from vcheck import Checks
 
-THESIS = "seed 000 (Gkimisis 2019) ch. 4, Table 1 cases (SEEDS.md)"
+THESIS = "Gkimisis 2019 ch. 4, Table 1 cases (SEEDS.md)"
 # case: (thesis outcome: contact loss?, what the thesis says)
 CASES = {
     "case1_5Nm_600rpm": (False, "no contact loss"),
@@ -56,9 +56,9 @@ def main():
     eps = re.search(r"contact ratio\s*(?:eps_alpha\s*)?[=:]?\s*([0-9.]+)", text)
     rb1 = re.search(r"gear 1: .*?\brb ([0-9.]+)", text)
     c.within("Table 1 pair: contact ratio", float(eps.group(1)) if eps else None, 1.72, 1.73,
-             "seed 000 Table 1: 1.72-1.73 (SEEDS.md)")
+             "Gkimisis 2019 Table 1: 1.72-1.73 (SEEDS.md)")
     c.abs("Table 1 pair: base radius R_g1", float(rb1.group(1)) if rb1 else None, 45.105, 0.0005,
-          "seed 000 Table 1: 45.105 mm (SEEDS.md), rounded to 0.001 mm", " mm")
+          "Gkimisis 2019 Table 1: 45.105 mm (SEEDS.md), rounded to 0.001 mm", " mm")
     return c.finish()
 
 

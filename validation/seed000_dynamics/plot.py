@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Contact-state histories and DTE of the seed 000 Table 1 cases (one panel per case).
+"""Contact-state histories and DTE of the Gkimisis 2019 Table 1 cases (one panel per case).
 
 Usage: plot.py <out.png> <run folder>...   (each folder holds response.csv of gearfem dynamics)
 """

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Seed 000 (Gkimisis 2019) Table 1 dynamic cases: 2-DOF torque-driven model with the
-# analytical (Weber/Cornell) torque table, then with the seed 000 semi-analytical law
+# Gkimisis 2019 Table 1 dynamic cases: 2-DOF torque-driven model with the
+# analytical (Weber/Cornell) torque table, then with the thesis' semi-analytical law
 # (Law = Ricker, the same files with the law swapped); the contact-state plot (plot.py);
 # the Table 1 pair geometry (gearfem profile); check.py against the thesis (PASS or FAIL).
 # Usage: validation/seed000_dynamics/run.sh   (GEARFEM=path/to/gearfem to override)

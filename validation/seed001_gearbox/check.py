@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Checks of seed 001's 150 kW gearbox (issue 16, section 3) against the thesis (Siasos,
-NTUA 2010; ../shared/reference/SEED001_GEARBOX.md): the damage chain from the thesis'
+"""Checks of the 150 kW gearbox of Siasos 2010 (README.md) against the thesis (NTUA;
+../shared/reference/SEED001_GEARBOX.md): the damage chain from the thesis'
 tabulated stresses, the first failure, the scuffing risk, and gearfem's own AGMA contact
 stresses against the thesis tables. Ends with one PASS or FAIL line (exit 1 on FAIL)."""
 import csv
@@ -53,7 +53,7 @@ check("AGMA sigma_H at 45 000 N m vs the thesis tables",
       ok, ", ".join(f"{a:.2f}/{b} ({100 * (a / b - 1):+.2f} %)" for a, b in zip(first_bin, thesis)) + ", 5 %")
 
 
-# ---- issue 16 sec. 2: ISO and FE stress sources (stage-2 sun-planet mesh) ------------------
+# ---- ISO and FE stress sources (stage-2 sun-planet mesh) -----------------------------------
 def num(x):
     return float(x) if x not in ("", "inf") else math.inf
 

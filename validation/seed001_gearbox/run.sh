@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Seed 001 (Siasos, NTUA 2010, ch. 9) 150 kW two-stage planetary gearbox (issue 16):
-#  - sec. 3: `gearfem gearbox` on the thesis' tabulated stresses (damage chain) and on
+# Siasos 2010 (NTUA, ch. 9) 150 kW two-stage planetary gearbox (see README.md):
+#  - the damage chain: `gearfem gearbox` on the thesis' tabulated stresses and on
 #    gearfem's own AGMA stresses;
-#  - sec. 2: the same gearbox with ISO 6336 stresses (Stress source = ISO) and with FE
-#    stresses on the sun-planet meshes of both stages (inputs/seed001_gearbox_fe.prm:
+#  - the stress sources: the same gearbox with ISO 6336 stresses (Stress source = ISO) and
+#    with FE stresses on the sun-planet meshes of both stages (inputs/seed001_gearbox_fe.prm:
 #    3-tooth sectors, 12 positions, 3 torques), plus the stage-2 FE mesh with halved element
 #    sizes at the top torque (convergence);
 # prints the figures recorded in validation/RESULTS.md and checks them (check.py: PASS/FAIL).

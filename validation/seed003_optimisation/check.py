@@ -124,7 +124,7 @@ ok = os.path.exists(os.path.join(a.out, "fe_optimum", "sweep.csv"))
 log = open(os.path.join(a.out, "fe_optimum.log")).read().splitlines()
 c.true("FE optimum: gearfem solve runs case 2's optimum.prm", ok,
        "ran" if ok else next((l for l in log if "error" in l), "no sweep.csv"), "sweep.csv written",
-       "issue 15 section 5: optimum.prm runs directly in gearfem solve")
+       "optimisation requirement: optimum.prm runs directly in gearfem solve")
 if not ok:
     sys.exit(c.finish())
 for d in ("involute", "optimum"):

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Seed 003 profile optimisation (Koronaios, NTUA 2021; see README.md): runs
+# Koronaios 2021 (NTUA) profile optimisation (see README.md): runs
 # `gearfem optimise` on case 1 (pinion rack) and case 2 (pinion flank) with four methods each
 # (steepest descent + golden section, SLSQP, COBYLA, ISRES; about 1 min in all on 2 cores),
 # then `gearfem profile` on the case-2 optimum.prm (the same geometry chain as an involute)
@@ -24,8 +24,8 @@ tail -n 2 "$out/case1_profile.log"
 echo "== gearfem profile results/case2/optimum.prm (the optimum through the geometry chain)"
 rm -rf "$out/case2_profile"
 nice -n 15 "$gearfem" profile "$out/case2/optimum.prm" --output-dir "$out/case2_profile" > "$out/case2_profile.log"
-# FE check (issue section 3; ~25 s for the involute, ~4 min for the B-spline pair, whose
-# gear-2 angle comes from the gap-closing search at every position).
+# FE check (README.md, "FE verification"; ~25 s for the involute, ~4 min for the B-spline
+# pair, whose gear-2 angle comes from the gap-closing search at every position).
 for d in involute optimum; do
   case=$root/inputs/seed003_opt_fe_involute.prm
   [ $d = optimum ] && case=$out/case2/optimum.prm
@@ -38,8 +38,8 @@ for d in involute optimum; do
   fi
   grep -v "ETA" "$out/fe_$d.log" | tail -n 2
 done
-# The tracked summaries without the wall-time column (issue 17: a tracked table changes only
-# when a number changes; the timings stay in $out/case*/summary.md).
+# The tracked summaries without the wall-time column (a tracked table changes only when a
+# number changes; the timings stay in $out/case*/summary.md).
 for c in 1 2; do
   /usr/bin/python3 - "$out/case$c/summary.md" "$here/case${c}_summary.md" <<'PY'
 import os, sys

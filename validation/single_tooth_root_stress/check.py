@@ -2,8 +2,8 @@
 """Single tooth under ISO tip load: FE against ISO 6336-3 method B (README.md, "Checks").
 
 Usage: check.py <results.csv> --status <exit of validate_single_tooth> --out <results dir>
-The `iso` column is F_t/(b m) Y_Fa Y_Sa of lib/analytical (ISO 6336-3 formulas on the 30-degree
-construction, unit-tested against the standard's closed form to 1e-6)."""
+The `iso` column is F_t/(b m) Y_Fa Y_Sa of lib/rating/iso6336 (ISO 6336-3 formulas on the
+30-degree construction, unit-tested against the standard's closed form to 1e-6)."""
 import argparse
 import os
 import sys

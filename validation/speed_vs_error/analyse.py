@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Metrics, errors against the converged reference, tables and Pareto plots of the
-speed-against-error study (issue 14 section 1). Reads results/<pair>/<rung>/ of study.py.
+speed-against-error study (README.md). Reads results/<pair>/<rung>/ of study.py.
 
     analyse.py [--out results]   -> results/metrics.csv, results/table.md,
                                     results/which_model.md, results/pareto_<metric>.png
@@ -214,7 +214,7 @@ def fmt_t(v):
 
 
 def write_table(data, err, path):
-    lines = ["# Speed against error (issue 14 section 1)", "",
+    lines = ["# Speed against error", "",
              "Errors are the largest relative errors [%] over the three torques against the reference "
              "(full gears, Q2, Lagrange, h_contact 0.05 mm, h_fillet 0.15 mm). `cycle`: CPU time of one "
              "40-position cycle [s] (the machine was shared; the wall time of the FE sweep is in the next "
@@ -300,7 +300,7 @@ def which_model(data, err, path):
             lines.append(f"| {q} | {data[pairs[0]][n][0]} | {c:.3g} | {100 * e:.3g} | {nxt or '–'} |")
         else:
             lines.append(f"| {q} | none below the reference | – | – | – |")
-    lines += ["", "## The default of `gearfem solve` (issue 14: a cheaper FE model that meets STE within 1 % "
+    lines += ["", "## The default of `gearfem solve` (requirement: a cheaper FE model that meets STE within 1 % "
               "on all three pairs becomes the default)", ""]
     d = "full_default"
     if all(d in err[k] for k in pairs):

@@ -69,7 +69,8 @@ def main():
                       "fewer contact nodes cost less")
         for n in ("weber_cornell", "potential_energy", "seed000_ricker"):
             if n in have:
-                c.at_most(f"{t}: {n} cycle time", have[n][3]["cycle"], 0.1, "issue 5: analytical cycle in ms", " s")
+                c.at_most(f"{t}: {n} cycle time", have[n][3]["cycle"], 0.1,
+                          "analytical-model speed target: a cycle in ms", " s")
     return c.finish()
 
 

@@ -1,4 +1,4 @@
-"""The three pairs of the speed-against-error study (issue 14 section 1) and the model ladder.
+"""The three pairs of the speed-against-error study (README.md) and the model ladder.
 
 Each pair is a gearfem parameter text for geometry and material, its three pinion torques,
 and the rack dedendum (for the root radius of the "sector down to the bore" models).
@@ -55,15 +55,15 @@ end
 """,
         module=4.5, teeth=(16, 24), shift=(0.1817, 0.1715), face_width=14.0,
         torques=(94.1, 183.4, 302.0),
-        # The analytical corner contact OA/BΓ did not converge on this pair until session 11
-        # (the fixed point x = G(g + x) of lib/analytical/corner.cc stalled at millimetres,
-        # exit 3; now a bracketed root): the tracked tables of 2026-11-23 ran its analytical
-        # rungs without it; validation/RESULTS.md has the rungs re-run with it.
+        # The analytical corner contact OA/BΓ on this pair needs the bracketed root of
+        # lib/analytical/corner.cc (a fixed point x = G(g + x) stalls at millimetres here): the
+        # tracked tables (2026-11-23) have its analytical rungs without the corner contact;
+        # validation/RESULTS.md has the rungs re-run with it.
         corner_contact=True),
-    # Seed 001 (Siasos 2010): 23/69, m 4, b 75/70, E 205 GPa; the torques of its FE
+    # Siasos 2010: 23/69, m 4, b 75/70, E 205 GPa; the torques of its FE
     # comparison (200-500 N m, validation/RESULTS.md) spanned by three.
     "seed001": dict(
-        title="seed 001 23/69 m 4",
+        title="Siasos 2010 23/69 m 4",
         geometry="""subsection Rack
   set Module = 4
 end
@@ -139,6 +139,6 @@ ANALYTICAL = {
     "iso6336": ("ISO 6336-1 c_gamma_alpha (+ ISO 6336-2/-3 stresses)", "analytical"),
     "weber_cornell": ("Weber/Cornell load sharing", "analytical"),
     "potential_energy": ("potential energy, Sainsot foundation", "analytical"),
-    "seed000_ricker": ("seed 000 Ricker law", "analytical"),
+    "seed000_ricker": ("Gkimisis 2019 Ricker law", "analytical"),
     "calibrated": ("calibrated Weber/Cornell, torque held out", "calibrated"),
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Speed against error (issue 14 section 1): run every rung of gearfem's model ladder on
+"""Speed against error (README.md): run every rung of gearfem's model ladder on
 three pairs at three torques each and collect cost and results into results/<pair>/.
 
     study.py run   [--pairs parker,fzg_c,seed001] [--only name,...] [--reuse]
@@ -8,7 +8,7 @@ three pairs at three torques each and collect cost and results into results/<pai
 Each FE rung is one `gearfem solve` (all three torques in one run, 40 positions over one
 pitch from A); its cost comes from run.json (member `cost`: set-up, sweep, peak memory) and
 from /usr/bin/time (CPU time, peak memory of the process). The analytical rungs are
-`gearfem rate` (ISO 6336, Weber/Cornell, potential energy, seed 000 Ricker law: mesh-cycle
+`gearfem rate` (ISO 6336, Weber/Cornell, potential energy, Gkimisis 2019 Ricker law: mesh-cycle
 time printed by the library) and `gearfem calibrate` on the reference FE results (the
 calibrated model with each torque held out). With --reuse a rung with a finished result
 (results/<pair>/<rung>/done) is not run again.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tip-corner contact acceptance on the Parker pair (issue: tip-corner contact accuracy).
+# Tip-corner contact acceptance on the Parker pair (README.md).
 # Runs gearfem solve with Slave body = 1 and 2, over a full cycle of 40 positions, their
 # mirror images and +-0.6/0.75/0.9 deg, at 100/200/340 N m; the single-pass formulation at
 # the corner positions for comparison; h_contact 0.05 mm at the transitions. check.py

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""STE smoothness of gearfem solve (tip-corner issue, item 3): the demo pair at 200 N m over
+"""STE smoothness of gearfem solve (README.md): the demo pair at 200 N m over
 40 positions from A; RMS and largest residual of a cubic fit to the STE over the double-pair
 zone (-5.9 ... -1.3 deg), in % of the mean STE. The reference is the smoothness of the exact
 STE itself (a smooth function of the roll angle inside the double-pair zone), so the residual

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Robust tip-relief optimisation (issue 15, section 4; README.md):
+# Robust tip-relief optimisation (README.md):
 #  1. `gearfem optimise` on inputs/tip_relief_opt.prm (Parker pair, the same linear relief on
 #     both gears, worst peak-to-peak STE of 240 and 340 N m, BOBYQA, the 5 x 5 Harris-map grid
 #     over the same box, the single-load optima at 240 and at 340 N m alone, and these designs

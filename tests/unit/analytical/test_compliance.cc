@@ -1,5 +1,6 @@
-// Stiffness components against independent closed forms in limit cases (issue 5, sec. 3).
+// Stiffness components against independent closed forms in limit cases.
 #include "analytical/compliance.h"
+#include "base/units.h"
 #include "analytical/elastic.h"
 #include "analytical/quadrature.h"
 #include "base/errors.h"
@@ -12,7 +13,7 @@ using namespace gearfem::analytical;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using gearfem::units::pi;
   const Material steel{210e9, 0.3};
 } // namespace
 
@@ -47,7 +48,7 @@ TEST(Hertz, LineContactClosedForm)
 
 TEST(Hertz, WeberLogTermMatchesSeedFormula)
 {
-  // Seed 000 eq. 3.8 (plane strain, equal materials):
+  // Gkimisis 2019 eq. 3.8 (plane strain, equal materials):
   // C_H = (2(1-nu^2)/pi)[ln(4 h1 h2/b_H^2) - nu/(1-nu)],
   // b_H^2 = 8 F (1-nu^2) CR1 CR2/(pi b E (CR1 + CR2)).
   const double E = 210e9, nu = 0.3, F = 5000, b = 0.02, CR1 = 0.012, CR2 = 0.03, h1 = 0.004,
@@ -88,7 +89,7 @@ TEST(Beam, UniformRectangularCantileverTimoshenko)
   EXPECT_NEAR(I.I2, d * d * d / (3 * t * t * t), 1e-12);
   const double ref = d * d * d / (3 * e.E * b * t * t * t / 12) + 1.2 * d / (e.G() * b * t);
   EXPECT_NEAR(beam_compliance(beam, load, b, e) / ref, 1.0, 1e-10);
-  // The same with the seed form 12 cos^2 phi [...]: 4 (d/t)^3 + 2.4(1+nu) d/t at phi = 0.
+  // The same with the thesis form 12 cos^2 phi [...]: 4 (d/t)^3 + 2.4(1+nu) d/t at phi = 0.
   EXPECT_NEAR(weber_beam_coefficient(I, 0.0, 0.3), 4 * std::pow(d / t, 3) + 2.4 * 1.3 * d / t, 1e-10);
 }
 
@@ -144,7 +145,7 @@ TEST(Beam, LinearTaperClosedForm)
 
 TEST(Foundation, ODonnellConstantsAndPlaneConvention)
 {
-  // Cornell (1981) prints 16.67/pi = 50/(3 pi); seed 000 has 50/(2 pi): the X^2 terms
+  // Cornell (1981) prints 16.67/pi = 50/(3 pi); Gkimisis 2019 has 50/(2 pi): the X^2 terms
   // differ by 3/2 exactly.
   const double X = 1.3, phi = 0.4, nu = 0.3;
   const double c2 = std::cos(phi) * std::cos(phi);
@@ -155,7 +156,7 @@ TEST(Foundation, ODonnellConstantsAndPlaneConvention)
   EXPECT_NEAR((cc - common) / ((1 - nu * nu) * c2 * X * X), 50.0 / 3 / pi, 1e-12);
   EXPECT_NEAR(50.0 / 3 / pi, 16.67 / pi, 2e-3); // Cornell's printed 16.67/pi
   EXPECT_NEAR((cs - common) / (cc - common), 1.5, 1e-12);
-  // Plane strain: compliance = C_f/(E b) with the true E, nu (the seed's definition).
+  // Plane strain: compliance = C_f/(E b) with the true E, nu (the thesis' definition).
   ToothBeam beam;
   beam.thickness = [](double) { return 0.006; };
   beam.height = 0.01;

@@ -1,8 +1,9 @@
-// Corner contact (seed 000 OA/BΓ): the exact rigid gap of lib/analytical/corner.h against a
+// Corner contact (OA/BΓ of Gkimisis 2019): the exact rigid gap of lib/analytical/corner.h against a
 // brute-force construction of the rigid pair (involutes drawn from their string-unwinding
 // definition, radii and rotations found by bisection), its leading-order curvature form,
 // continuity and monotony, and the lever arm of the corner force.
 #include "analytical/corner.h"
+#include "base/units.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,7 @@ using namespace gearfem::analytical;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using gearfem::units::pi;
   constexpr double deg = pi / 180;
 
   // A standard external pair (sharp tips at the tip circles): z1/z2, module m [m].

@@ -1,13 +1,14 @@
 // The analytical models on the generated geometry (involute + real fillet): AGMA Y_J and
 // the ISO 30-degree section on the exact fillet curves, the potential-energy mesh
 // stiffness of the 62/62 case, the Weber/Cornell model against ISO 6336-1.
-#include "analytical/agma.h"
-#include "analytical/calibration.h"
+#include "rating/agma.h"
+#include "base/units.h"
+#include "calibration/model.h"
 #include "analytical/cycle_table.h"
 #include "analytical/from_geometry.h"
-#include "analytical/iso6336.h"
+#include "rating/iso6336.h"
 #include "analytical/mesh_cycle.h"
-#include "analytical/seed000.h"
+#include "analytical/ricker_load_sharing.h"
 #include "analytical/tooth.h"
 #include "geometry/pair.h"
 
@@ -18,10 +19,11 @@
 
 using namespace gearfem;
 using namespace gearfem::analytical;
+using namespace gearfem::calibration;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using gearfem::units::pi;
   constexpr double deg = pi / 180;
 
   geometry::GearParameters gear(int z, double m, double x = 0.0, double b = 0.02)
@@ -67,8 +69,8 @@ TEST(GeneratedGeometry, IsoCriticalSectionOnGeneratedFillet)
   for (auto c : {std::pair<int, double>{23, 0.0}, {69, 0.0}, {17, 0.4}})
     {
       const geometry::ToothProfile p = geometry::ToothProfile::generate(gear(c.first, 4e-3, c.second));
-      const iso6336::CriticalSection cs = iso6336::critical_section(fillet_curve(p));
-      const auto cf = iso6336::rack_fillet_closed_form(c.first, 4e-3, 20 * deg, c.second, 1.25, 0.25);
+      const gearfem::rating::iso6336::CriticalSection cs = gearfem::rating::iso6336::critical_section(fillet_curve(p));
+      const auto cf = gearfem::rating::iso6336::rack_fillet_closed_form(c.first, 4e-3, 20 * deg, c.second, 1.25, 0.25);
       EXPECT_NEAR(cs.s_Fn / cf.s_Fn, 1.0, 1e-6) << c.first;
       EXPECT_NEAR(cs.rho_F / cf.rho_F, 1.0, 1e-5) << c.first;
       EXPECT_NEAR((cs.y - cf.y) / 4e-3, 0.0, 1e-6) << c.first;
@@ -80,18 +82,18 @@ TEST(GeneratedGeometry, AgmaLewisParabolaOnGeneratedFilletMatchesAgma908)
   // AGMA 908: Lewis parabola tangent to the fillet. On the exact rack-generated fillet (the
   // n_o -> infinity limit) against AGMA 908's own trochoid with a 10000-tooth shaper.
   const geometry::GearPair gp = pair(23, 69, 4e-3);
-  const agma::LineOfAction l = agma::line_of_action(23, 69, 4e-3, 20 * deg, 50e-3, 142e-3, 184e-3);
+  const gearfem::rating::agma::LineOfAction l = gearfem::rating::agma::line_of_action(23, 69, 4e-3, 20 * deg, 50e-3, 142e-3, 184e-3);
   for (int i : {1, 2})
     {
       const int z = i == 1 ? 23 : 69;
       const double tanW = i == 1 ? l.C4 / l.Rb1 : (l.C6 - l.C2) / l.Rb2;
-      const agma::BendingGeometry ref = agma::geometry_factor_J(z, 0, tanW, 20 * deg, l.phi_r);
-      const agma::LewisSection s = agma::lewis_section(fillet_curve(gp.gear(i)), ref.r_nL * 4e-3);
-      agma::BendingGeometry g = ref;
+      const gearfem::rating::agma::BendingGeometry ref = gearfem::rating::agma::geometry_factor_J(z, 0, tanW, 20 * deg, l.phi_r);
+      const gearfem::rating::agma::LewisSection s = gearfem::rating::agma::lewis_section(fillet_curve(gp.gear(i)), ref.r_nL * 4e-3);
+      gearfem::rating::agma::BendingGeometry g = ref;
       g.s_F = s.s_F / 4e-3;
       g.h_F = s.h_F / 4e-3;
       g.rho_F = s.rho_F / 4e-3;
-      agma::form_and_stress_factors(g, 20 * deg, l.phi_r);
+      gearfem::rating::agma::form_and_stress_factors(g, 20 * deg, l.phi_r);
       EXPECT_NEAR(g.s_F / ref.s_F, 1.0, 2e-4) << z;
       EXPECT_NEAR(g.h_F / ref.h_F, 1.0, 2e-4) << z;
       EXPECT_NEAR(g.rho_F / ref.rho_F, 1.0, 2e-3) << z;
@@ -102,7 +104,7 @@ TEST(GeneratedGeometry, AgmaLewisParabolaOnGeneratedFilletMatchesAgma908)
 
 TEST(GeneratedGeometry, PotentialEnergyMeshStiffness62x62)
 {
-  // Issue 5: 62/62, m 2, b 20 mm, bore 35 mm, E 211 GPa: max mesh stiffness of order 4e8 N/m
+  // Reference pair: 62/62, m 2, b 20 mm, bore 35 mm, E 211 GPa: max mesh stiffness of order 4e8 N/m
   // (the exact reference is held back). Plane stress (the FE default) and plane strain.
   const geometry::GearPair gp = pair(62, 62, 2e-3);
   for (auto plane : {PlaneCondition::plane_stress, PlaneCondition::plane_strain})
@@ -168,13 +170,13 @@ TEST(GeneratedGeometry, WeberCornellAgainstIso6336)
   const geometry::GearPair gp = pair(23, 69, 4e-3);
   const double k_strain = mean_k(gp, PlaneCondition::plane_strain);
   const double k_stress = mean_k(gp, PlaneCondition::plane_stress);
-  iso6336::StiffnessInput in;
+  gearfem::rating::iso6336::StiffnessInput in;
   in.z1 = 23;
   in.z2 = 69;
   in.alpha_n = 20 * deg;
   in.module = 4e-3;
   in.eps_alpha = gp.contact_ratio();
-  const double c_ga = iso6336::mesh_stiffness(in).c_gamma_alpha;
+  const double c_ga = gearfem::rating::iso6336::mesh_stiffness(in).c_gamma_alpha;
   std::printf("23/69 m4: Weber/Cornell mean k = %.2f (plane strain), %.2f (plane stress); ISO c_ga = %.2f N/(mm um)\n",
               k_strain, k_stress, c_ga);
   EXPECT_NEAR(k_strain / c_ga, 1.0, 0.35);
@@ -198,7 +200,7 @@ TEST(GeneratedGeometry, ShiftDependenceOfSingleStiffnessFollowsIso)
   double prev = 0;
   for (double x1 : {-0.3, 0.0, 0.3})
     {
-      const double k = kC(x1, 0.0), c_th = 1 / iso6336::q_prime(23, 69, x1, 0.0);
+      const double k = kC(x1, 0.0), c_th = 1 / gearfem::rating::iso6336::q_prime(23, 69, x1, 0.0);
       std::printf("23/69 x1 = %+.1f: single-pair k(C) = %.2f, ISO c'_th = %.2f N/(mm um), ratio %.3f\n",
                   x1, k, c_th, k / c_th);
       EXPECT_GT(k, prev);
@@ -206,13 +208,13 @@ TEST(GeneratedGeometry, ShiftDependenceOfSingleStiffnessFollowsIso)
       prev = k;
     }
   EXPECT_GT(kC(0.0, 0.3), kC(0.0, 0.0));
-  EXPECT_LT(iso6336::q_prime(23, 69, 0.0, 0.3), iso6336::q_prime(23, 69, 0.0, 0.0));
+  EXPECT_LT(gearfem::rating::iso6336::q_prime(23, 69, 0.0, 0.3), gearfem::rating::iso6336::q_prime(23, 69, 0.0, 0.0));
 }
 
 TEST(GeneratedGeometry, Seed000SemiAnalyticalAgainstFullModel)
 {
-  // Seed 000 Table 1 pair (z 32/60, m 3, b 30, C_f 0.49, E 200 GPa; plane strain, the
-  // seed's 50/(2 pi)). The closed form (exponential thickness fit, monomial integrals,
+  // Gkimisis 2019 Table 1 pair (z 32/60, m 3, b 30, C_f 0.49, E 200 GPa; plane strain, the
+  // thesis' 50/(2 pi)). The closed form (exponential thickness fit, monomial integrals,
   // Hertz frozen at the pitch point) against the full Weber/Cornell model on the same
   // generated teeth: the thesis reports <= 15 % along AB; we measure 12.8 % at most.
   auto g = [](int z) {
@@ -234,7 +236,7 @@ TEST(GeneratedGeometry, Seed000SemiAnalyticalAgainstFullModel)
   for (const auto &s : c)
     km += s.stiffness / c.size();
   const double x = F / km;
-  const Seed000SemiAnalytical sa(t1, t2, {200e9, 0.3}, {200e9, 0.3}, 30e-3, L, km, o);
+  const RickerSemiAnalytical sa(t1, t2, {200e9, 0.3}, {200e9, 0.3}, 30e-3, L, km, o);
   EXPECT_NEAR(sa.K1(0), t1.beam.thickness(0), 1e-15);
   double emax = 0;
   for (int i = 0; i <= 100; ++i)
@@ -242,7 +244,7 @@ TEST(GeneratedGeometry, Seed000SemiAnalyticalAgainstFullModel)
       const double gg = L.g_A + (L.g_E - L.g_A) * i / 100.0;
       emax = std::max(emax, std::abs(sa.pair_stiffness(gg, x) * full(gg, km * x * 0.5) - 1));
     }
-  std::printf("seed 000 semi-analytical pair stiffness: max error %.1f %% along AB\n", 100 * emax);
+  std::printf("Gkimisis 2019 semi-analytical pair stiffness: max error %.1f %% along AB\n", 100 * emax);
   EXPECT_LT(emax, 0.15);
   // Ricker weight (eq. 3.37, f_c = 2 f_m): 1 at the middle of AB and its minima
   // -exp(-3)/2 = -0.025 at the edges of the single-contact zone (c_x x -> 0).
@@ -260,12 +262,12 @@ TEST(GeneratedGeometry, Seed000SemiAnalyticalAgainstFullModel)
       const double e = std::abs(sa.load(phi, x) / load_at_compression(mm, phi, x) - 1);
       (phi > wB - p && phi < wA + p ? smax : dmax) = std::max(phi > wB - p && phi < wA + p ? smax : dmax, e);
     }
-  std::printf("seed 000 Ricker load sharing: max error %.1f %% (double-contact zones), %.1f %% (single)\n",
+  std::printf("Gkimisis 2019 Ricker load sharing: max error %.1f %% (double-contact zones), %.1f %% (single)\n",
               100 * dmax, 100 * smax);
   EXPECT_LT(dmax, 0.10);
 }
 
-// Calibration (issue 5 section 4): with STE samples generated by the calibrated model
+// Calibration: with STE samples generated by the calibrated model
 // itself at known factors, the fit must recover them (a consistency check of the fit that
 // is independent of the FE), and the corner contact must reproduce the narrowing of the
 // single-pair zone with load.
@@ -278,7 +280,7 @@ TEST(Calibration, RecoversKnownFactorsAndExtendedContact)
   truth.beam = 1.15, truth.foundation = 1.0, truth.hertz = 0.85, truth.body = 4e-10, truth.corner_radius = 0.15e-3;
   const CalibratedMesh m(pc, truth);
   std::vector<SteSample> samples;
-  const double p1 = 2 * M_PI / 50, phiA = (pc.line().g_A - pc.line().g_C) / pc.line().rb1;
+  const double p1 = 2 * gearfem::units::pi / 50, phiA = (pc.line().g_A - pc.line().g_C) / pc.line().rb1;
   for (const double T : {100.0, 200.0, 340.0})
     for (int i = 0; i < 30; ++i)
       {
@@ -311,9 +313,9 @@ TEST(Calibration, RecoversKnownFactorsAndExtendedContact)
   EXPECT_EQ(m.load_at(0.0, -1e-6), 0.0);
 }
 
-// Seed 000 torque table with corner contact OA/BΓ (corner.h): inside the single-pair zone
+// Torque table of Gkimisis 2019 with corner contact OA/BΓ (corner.h): inside the single-pair zone
 // and for small x it equals the table without corner contact; the zone where one pair
-// carries the load narrows as x grows (seed 000, sec. 3.3); T is continuous at A and E.
+// carries the load narrows as x grows (Gkimisis 2019, sec. 3.3); T is continuous at A and E.
 TEST(TorqueTable, CornerContact)
 {
   const geometry::GearPair gp = pair(50, 50, 3e-3);
@@ -404,9 +406,9 @@ TEST(Calibration, TwoSidedTorqueMirrorsTheDriveFlank)
   const InvoluteTooth t1 = involute_tooth(gp.gear(1));
   PairCompliance pc(t1, involute_tooth(gp.gear(2)), {207e9, 0.3}, {207e9, 0.3}, 20e-3, pair_line(gp));
   const PairLine &L = pc.line();
-  EXPECT_NEAR(reverse_offset(t1, L, 0.0), M_PI / 50, 1e-7);
+  EXPECT_NEAR(reverse_offset(t1, L, 0.0), gearfem::units::pi / 50, 1e-7);
   const double b = 1.5e-4;
-  EXPECT_NEAR(reverse_offset(t1, L, b), M_PI / 50 - b / (2 * L.rb1), 1e-7);
+  EXPECT_NEAR(reverse_offset(t1, L, b), gearfem::units::pi / 50 - b / (2 * L.rb1), 1e-7);
   const CalibratedMesh m(pc, CalibrationFactors{});
   const double psi = reverse_offset(t1, L, b);
   for (const double phi : {-0.05, 0.0, 0.013, 0.04})
@@ -425,7 +427,7 @@ TEST(Calibration, TwoSidedTorqueMirrorsTheDriveFlank)
 // Load-given mesh cycle with corner contact (the inverse of load_at_compression): at each
 // position the deflection x carries exactly the load (conservation), the pair loads sum to
 // it, positions where no corner pair engages give the path-only answer, and the single-pair
-// zone narrows as the load grows (seed 000; the FE shows the same, docs/contact.md).
+// zone narrows as the load grows (Gkimisis 2019; the FE shows the same, docs/contact.md).
 TEST(MeshCycle, CornerContactInTheLoadGivenSolver)
 {
   const geometry::GearPair gp = pair(50, 50, 3e-3);
@@ -461,9 +463,9 @@ TEST(MeshCycle, CornerContactInTheLoadGivenSolver)
 
 TEST(GeneratedGeometry, MeshCycleTableBothLaws)
 {
-  // gearfem rate's mesh_cycle.csv (cycle_table.h) on the seed 000 Table 1 pair. The
-  // load-sharing rows must equal mesh_cycle() itself; the seed 000 Ricker rows must invert
-  // the law (Seed000SemiAnalytical::load at the tabulated STE gives F back: the inverse
+  // gearfem rate's mesh_cycle.csv (cycle_table.h) on the Gkimisis 2019 Table 1 pair. The
+  // load-sharing rows must equal mesh_cycle() itself; the Ricker rows must invert
+  // the law (RickerSemiAnalytical::load at the tabulated STE gives F back: the inverse
   // function), carry F in their pair loads (equilibrium), and stay within the thesis' 15 %
   // of the full model's mean stiffness.
   auto g = [](int z) {
@@ -477,7 +479,7 @@ TEST(GeneratedGeometry, MeshCycleTableBothLaws)
   in.options.plane = PlaneCondition::plane_strain;
   const std::vector<double> torques{40.0, 120.0};
   const CycleTable ls = mesh_cycle_table(in, CycleLaw::load_sharing, torques, 40);
-  const CycleTable rk = mesh_cycle_table(in, CycleLaw::seed000_ricker, torques, 40);
+  const CycleTable rk = mesh_cycle_table(in, CycleLaw::ricker, torques, 40);
   ASSERT_EQ(ls.table.n_rows(), 80u);
   ASSERT_EQ(rk.table.n_rows(), 80u);
   const PairCompliance pc(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, in.options);
@@ -489,7 +491,7 @@ TEST(GeneratedGeometry, MeshCycleTableBothLaws)
   double km = 0;
   for (const auto &s : direct)
     km += s.stiffness / direct.size();
-  const Seed000SemiAnalytical sa(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, km, in.options);
+  const RickerSemiAnalytical sa(in.pinion, in.gear, in.m1, in.m2, in.face_width, in.line, km, in.options);
   const double F = 120.0 / in.line.rb1;
   for (int i = 0; i < 40; ++i)
     {

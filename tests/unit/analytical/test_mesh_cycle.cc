@@ -1,6 +1,7 @@
-// Mesh-cycle load sharing (issue 5, sec. 3): periodic with the pitch, jumps at the
+// Mesh-cycle load sharing: periodic with the pitch, jumps at the
 // transitions, pair stiffnesses and loads sum to the totals, equal deflection holds.
 #include "analytical/mesh_cycle.h"
+#include "base/units.h"
 #include "base/errors.h"
 
 #include <gtest/gtest.h>
@@ -11,14 +12,14 @@ using namespace gearfem::analytical;
 
 namespace
 {
-  constexpr double pi = 3.14159265358979323846;
+  using gearfem::units::pi;
 
   // A pair with z1 = 20, m 3 mm, eps ~ 1.6, and a tooth-pair compliance that is softest at
   // the ends of contact plus a Weber-like log Hertz term (decreasing with load).
   MeshModel test_model()
   {
     MeshModel m;
-    m.rb1 = 0.5 * 0.06 * std::cos(20 * pi / 180);
+    m.rb1 = 0.5 * 0.06 * std::cos(20 * gearfem::units::deg);
     m.base_pitch = 2 * pi * m.rb1 / 20;
     m.g_C = 0.0103;
     m.g_A = m.g_C - 0.8 * m.base_pitch;

@@ -1,4 +1,4 @@
-// base/number.h: the one checked text -> number conversion (issue 13).
+// base/number.h: the one checked text -> number conversion.
 #include "base/errors.h"
 #include "base/number.h"
 

@@ -1,7 +1,8 @@
-// base/roots.h: the one root-finding utility (issue 12). Converged roots of closed-form
+// base/roots.h: the one root-finding utility. Converged roots of closed-form
 // equations; intervals that do not bracket and iteration limits end in SolverError naming
 // the equation, the bracket and the iteration count, never in an unconverged value.
 #include "base/errors.h"
+#include "base/units.h"
 #include "base/roots.h"
 
 #include <gtest/gtest.h>
@@ -32,7 +33,7 @@ namespace
 
   /// inv(a) = tan a - a, the involute function; inv(20 deg) = 0.014904383867336.
   double inv(double a) { return std::tan(a) - a; }
-  constexpr double deg = 3.14159265358979323846 / 180.0;
+  constexpr double deg = gearfem::units::pi / 180.0;
 } // namespace
 
 TEST(Roots, Toms748FindsClosedFormRoots)
@@ -62,7 +63,7 @@ TEST(Roots, NewtonFindsClosedFormRoots)
     return std::make_pair(2 * G / zn * std::tan(th) - H - th,
                           2 * G / zn / (std::cos(th) * std::cos(th)) - 1.0);
   };
-  const double th = base::find_root_newton(theta, 0.0, 1.5, 3.14159265358979323846 / 6, 1e-15, 100, "theta");
+  const double th = base::find_root_newton(theta, 0.0, 1.5, gearfem::units::pi / 6, 1e-15, 100, "theta");
   EXPECT_NEAR(2 * G / zn * std::tan(th) - H - th, 0.0, 1e-15);
 }
 

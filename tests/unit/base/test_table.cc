@@ -1,5 +1,5 @@
 // base/table.h: the CSV writer refuses non-finite values (nothing partial is left), and the
-// reader converts every cell with the checked conversion (issue 13).
+// reader converts every cell with the checked conversion.
 #include "base/errors.h"
 #include "base/table.h"
 

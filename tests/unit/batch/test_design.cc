@@ -1,4 +1,4 @@
-// batch/design.h: design tables, full factorial and Latin hypercube (issue 18). Each test
+// batch/design.h: design tables, full factorial and Latin hypercube. Each test
 // states what it checks against: the table text itself, counting, or the defining property
 // of the sampling (one sample per stratum and dimension).
 #include "base/errors.h"

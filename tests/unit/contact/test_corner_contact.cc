@@ -4,13 +4,14 @@
 // symmetry of the problem itself, and the swap of the slave body, which changes the
 // discretisation but not the physics. Sector models of the Parker pair (50/50, m 3, b 20)
 // at 100 N m, in the single-pair zone where the approaching or receding pair touches with
-// a tip corner (+-0.6, +-0.75, +-0.9 deg). Tolerances of the tip-corner issue: slave swap
+// a tip corner (+-0.6, +-0.75, +-0.9 deg). Tolerances: slave swap
 // 0.3 % on STE and 1 % on root stress, mirror 0.5 % on STE (its discretisation part; the
 // physical part of holding gear 2 while the pinion turns is bounded and reported). The single-pass formulation
 // (`Slave selection = fixed`) must fail the slave swap here, or the test could not see
 // the defect it guards against.
 #include "contact/gear_contact.h"
-#include "contact/parameters.h"
+#include "base/units.h"
+#include "solve/input.h"
 #include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -25,10 +26,13 @@
 
 using namespace gearfem;
 using namespace gearfem::contact;
+using gearfem::solve::declare_gear_contact_input;
+using gearfem::solve::GearContactInput;
+using gearfem::solve::parse_gear_contact_input;
 
 namespace
 {
-  const double deg = 3.14159265358979323846 / 180;
+  const double deg = gearfem::units::pi / 180;
 
   std::string prm_text(int slave, const std::string &selection)
   {
@@ -107,7 +111,7 @@ TEST(CornerContact, SlaveIndependentAndMirrorSymmetric)
       // STE1(phi) - STE1(-phi) = [STE1(phi) - STE2(-phi)] + [STE2(-phi) - STE1(-phi)]: the
       // first bracket is physical (which gear turns while the other is held: the corner
       // force acts along the flank it touches, whose arm about O1 is r_b1 or k r_b1), the
-      // second the discretisation (the slave swap). The issue's 0.5 % applies to the
+      // second the discretisation (the slave swap). The 0.5 % tolerance applies to the
       // discretisation; the physical part is reported and bounded by the corner lever-arm
       // estimate, share_corner (1 - k) < 1 % (lib/analytical/corner.h).
       for (const auto &[x, y, z] : {std::make_tuple(&a1, &b1, &b2), std::make_tuple(&a2, &b2, &b1)})

@@ -3,8 +3,9 @@
 // tangent against a finite difference, rotation control against torque control, load
 // sharing at named points, bad input.
 #include "base/errors.h"
+#include "base/units.h"
 #include "contact/gear_contact.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -17,6 +18,9 @@
 
 using namespace gearfem;
 using namespace gearfem::contact;
+using gearfem::solve::declare_gear_contact_input;
+using gearfem::solve::GearContactInput;
+using gearfem::solve::parse_gear_contact_input;
 
 namespace
 {
@@ -119,7 +123,7 @@ TEST(GearContact, EquilibriumAtPitchPoint)
 TEST(GearContact, TwoPairsAtStartOfContactAndSharingSumsToOne)
 {
   const double phiA = setup().pair->point("A").roll_angle;
-  const auto p      = at(lagrange(), phiA + 0.05 * (2 * M_PI / 50), 200.0);
+  const auto p      = at(lagrange(), phiA + 0.05 * (2 * gearfem::units::pi / 50), 200.0);
   const auto &r     = p.r;
   ASSERT_TRUE(p.state.solution.converged);
   EXPECT_EQ(r.n_pairs, 2);
@@ -131,7 +135,7 @@ TEST(GearContact, TwoPairsAtStartOfContactAndSharingSumsToOne)
 
 TEST(GearContact, TangentMatchesFiniteDifferenceAndRotationControl)
 {
-  const double phi = 0.3 * (2 * M_PI / 50);
+  const double phi = 0.3 * (2 * gearfem::units::pi / 50);
   const auto p1 = at(lagrange(), phi, 200.0);
   const auto p2 = at(lagrange(), phi, 202.0, &p1);
   const auto &r1 = p1.r, &r2 = p2.r;
@@ -172,7 +176,7 @@ TEST(GearContact, BuiltFromTwoPreparedBodies)
                                     build_gear_body(*in.pair, 2, in.mesh[1], in.material[1], in.fe)};
   GearContactModel m(*in.pair, std::move(bodies), ContactOptions());
   EXPECT_EQ(m.n_dofs(), lagrange().n_dofs());
-  const double phi = 0.3 * (2 * M_PI / 50);
+  const double phi = 0.3 * (2 * gearfem::units::pi / 50);
   const auto a = m.solve(phi, 200.0), b = lagrange().solve(phi, 200.0);
   EXPECT_EQ(a.solution.q, b.solution.q);
   EXPECT_EQ(a.solution.n_active, b.solution.n_active);

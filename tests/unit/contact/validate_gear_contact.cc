@@ -4,12 +4,13 @@
 //  2. penalty against Lagrange (and penalty x10) at every position of a 40-position cycle,
 //     with the torque-ratio and bore-reaction checks;
 //  3. peak pressure against Hertz on the local involute radii along the path of contact;
-//  4. seed 001 (23/69, m 4, b 70, 3-tooth sectors) at the pitch point, 200-500 N m, against
-//     plane Hertz and the thesis FEM (Siasos 2010; ../shared/reference/SEEDS.md);
+//  4. the Siasos 2010 pair (23/69, m 4, b 70, 3-tooth sectors) at the pitch point, 200-500 N m,
+//     against plane Hertz and the thesis FEM (../shared/reference/SEEDS.md);
 //  5. pinion root stress at HPSTC against ISO 6336-3 method B (sigma_F0).
 #include "analytical/from_geometry.h"
-#include "analytical/iso6336.h"
-#include "contact/parameters.h"
+#include "base/units.h"
+#include "rating/iso6336.h"
+#include "solve/input.h"
 #include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -23,12 +24,15 @@
 
 using namespace gearfem;
 using namespace gearfem::contact;
+using gearfem::solve::declare_gear_contact_input;
+using gearfem::solve::GearContactInput;
+using gearfem::solve::parse_gear_contact_input;
 
 namespace
 {
   /// Solve and evaluate one position. `warm` (may be null) holds the converged state of the
   /// previous position, if any, and receives this one.
-  post::PositionResult solve(GearContactModel &m, double phi, double T,
+  post::PositionResult solve_at(GearContactModel &m, double phi, double T,
                              std::optional<ContactSolution> *warm = nullptr)
   {
     auto s = m.solve(phi, T, warm && *warm ? &**warm : nullptr);
@@ -108,7 +112,7 @@ TEST(GearContactValidation, MeshConvergenceAtCAndD)
       dofs[l] = m->n_dofs();
       int k   = 0;
       for (const char *p : {"C", "D"})
-        ste[k++][l] = solve(*m, in.pair->point(p).roll_angle, T).ste;
+        ste[k++][l] = solve_at(*m, in.pair->point(p).roll_angle, T).ste;
     }
   std::cout << "\n### Mesh convergence of STE (demo pair, 340 N m, Lagrange, Q2, h_contact = h_fillet = h)\n\n"
             << "| point | h = 0.4 mm | 0.2 mm | 0.1 mm | 0.05 mm | observed order (last 3) | reference STE [um] | "
@@ -152,9 +156,9 @@ TEST(GearContactValidation, PenaltyAgainstLagrangeOverTheCycle)
   std::optional<ContactSolution> w[3];
   for (const auto &[n, phi] : positions)
     {
-      auto a = solve(*lag, phi, T, &w[0]);
-      auto b = solve(*pen, phi, T, &w[1]);
-      auto c = solve(*pen10, phi, T, &w[2]);
+      auto a = solve_at(*lag, phi, T, &w[0]);
+      auto b = solve_at(*pen, phi, T, &w[1]);
+      auto c = solve_at(*pen10, phi, T, &w[2]);
       d_pen   = std::max(d_pen, std::abs(b.ste / a.ste - 1));
       d_pen10 = std::max(d_pen10, std::abs(c.ste / b.ste - 1));
       ratio   = std::max(ratio, std::abs(a.torque_gear / T - 1)); // z2/z1 = 1
@@ -177,10 +181,7 @@ TEST(GearContactValidation, PenaltyAgainstLagrangeOverTheCycle)
 TEST(GearContactValidation, PressureAgainstHertzAlongThePath)
 {
   const double T = 340;
-  // h_contact 0.025 mm: ~20 nodes across each patch. Until the coast-corner transition
-  // (session 8) this case asked for 0.05 mm, but gmsh's Blossom failed at the coast tip
-  // corners (h_coast / h_contact = 5) and the subdivision fallback halved every boundary
-  // edge, so the recorded figures were at 0.025 mm on the flanks. A true 0.05 mm mesh puts
+  // h_contact 0.025 mm: ~20 nodes across each patch. A 0.05 mm mesh puts only
   // 10-12 nodes across a patch, and the nodal peak then misses the Hertz peak by up to 3 %.
   auto in = input(demo, mesh_section(0.025, 0.25, 0.25) + "subsection Solve\n set Number of positions = 20\nend\n");
   auto m  = in.model();
@@ -192,14 +193,14 @@ TEST(GearContactValidation, PressureAgainstHertzAlongThePath)
   std::optional<ContactSolution> prev;
   for (const auto &[name, phi] : in.positions())
     {
-      auto r = solve(*m, phi, T, &prev);
+      auto r = solve_at(*m, phi, T, &prev);
       for (const auto &p : r.pairs)
         if (p.resolved && !p.edge && p.active_nodes >= 8)
           {
             const double ratio = p.p_max / p.p_hertz;
             worst = std::max(worst, std::abs(ratio - 1));
             ++n;
-            std::cout << std::setprecision(4) << "| " << phi * 180 / M_PI << " | " << p.pinion_tooth << " | " << p.share
+            std::cout << std::setprecision(4) << "| " << phi / gearfem::units::deg << " | " << p.pinion_tooth << " | " << p.share
                       << " | " << p.active_nodes << " | " << p.p_max / 1e6 << " | " << p.p_hertz / 1e6 << " | "
                       << ratio << " | " << p.half_width * 1e3 << " | " << p.a_hertz * 1e3 << " |\n";
           }
@@ -215,12 +216,12 @@ TEST(GearContactValidation, Seed001PitchPoint)
   const double T[4] = {500, 400, 300, 200}, fem[4] = {698.5, 649.7, 602.5, 556.7}, hertz[4] = {709, 634, 549, 448};
   auto in = input(seed001, mesh_section(0.02, 0.2, 0.2, "  set Model = sector\n  set h_body = 4\n"));
   auto m  = in.model();
-  std::cout << "\n### Seed 001 pair (23/69, m 4, b 70, 3-tooth sectors, h_contact 0.02 mm) at the pitch point\n\n"
+  std::cout << "\n### Seed 001 pair (Siasos 2010: 23/69, m 4, b 70, 3-tooth sectors, h_contact 0.02 mm) at the pitch point\n\n"
             << "| T1 [N m] | FE p_max [MPa] | plane-stress Hertz [MPa] | FE/Hertz | digest Hertz (E/(1-nu^2)) [MPa] | thesis FEM [MPa] | "
                "half-width fit/Hertz [mm] | nodes |\n|---|---|---|---|---|---|---|---|\n";
   for (int i = 0; i < 4; ++i)
     {
-      const auto r = solve(*m, 0.0, T[i]);
+      const auto r = solve_at(*m, 0.0, T[i]);
       ASSERT_FALSE(r.pairs.empty());
       const auto &p = *std::max_element(r.pairs.begin(), r.pairs.end(),
                                         [](const auto &a, const auto &b) { return a.share < b.share; });
@@ -240,9 +241,9 @@ TEST(GearContactValidation, RootStressAgainstIso6336AtHpstc)
   const double T = 340;
   auto in = input(demo, mesh_section(0.2, 0.1, 0.2));
   auto m  = in.model();
-  const auto r = solve(*m, in.pair->point("D").roll_angle, T);
+  const auto r = solve_at(*m, in.pair->point("D").roll_angle, T);
   const auto &pin = in.pair->gear(1);
-  namespace iso = analytical::iso6336;
+  namespace iso = gearfem::rating::iso6336;
   const auto cs  = iso::critical_section(analytical::fillet_curve(pin));
   const auto t   = analytical::involute_tooth(pin, 0.0, 5);
   const auto rf  = iso::root_factors(cs, {t.rb, t.psi_b}, in.pair->point("D").r1, pin.parameters().rack.module,
@@ -261,5 +262,5 @@ TEST(GearContactValidation, RootStressAgainstIso6336AtHpstc)
             << " | " << share << " | " << fe / share / 1e6 << " | " << sF0 / 1e6 << " | " << fe / sF0 << " | "
             << fe / share / sF0 << " |\n";
   fe /= share;
-  EXPECT_NEAR(fe / sF0, 1.0, 0.15); // ISO method B is an engineering formula (the fem issue found 0.92-0.94)
+  EXPECT_NEAR(fe / sF0, 1.0, 0.15); // ISO method B is an engineering formula (the fem validation found 0.92-0.94)
 }

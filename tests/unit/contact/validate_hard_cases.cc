@@ -3,7 +3,7 @@
 // validation/contact_hard_cases/README.md. Independent checks per case: torque balance
 // (moment of the contact forces = T1), and the physics stated in each row.
 #include "base/errors.h"
-#include "contact/parameters.h"
+#include "solve/input.h"
 #include "post/position.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -17,6 +17,9 @@
 
 using namespace gearfem;
 using namespace gearfem::contact;
+using gearfem::solve::declare_gear_contact_input;
+using gearfem::solve::GearContactInput;
+using gearfem::solve::parse_gear_contact_input;
 
 namespace
 {

@@ -1,8 +1,9 @@
-// Seed 000 Ricker-wavelet load sharing (Gkimisis 2019, eqs. 3.35-3.46) against facts that
+// Ricker-wavelet load sharing (Gkimisis 2019, eqs. 3.35-3.46) against facts that
 // follow from its definitions independently of the implementation: the single-contact
 // zone of eq. 3.35, the wavelet's extrema and zeros, its integral, superposition of the
 // pairs that are on the line of action, periodicity and symmetry.
 #include "dynamics/ricker_law.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -14,9 +15,9 @@ using namespace gearfem::dynamics;
 
 namespace
 {
-  constexpr double deg = M_PI / 180;
+  constexpr double deg = gearfem::units::pi / 180;
 
-  /// Seed 000 Table 1 pair: z1 = 32, AB = [-9.2 deg, 10.2 deg] in w1 (digest "Cases").
+  /// Gkimisis 2019 Table 1 pair: z1 = 32, AB = [-9.2 deg, 10.2 deg] in w1 (digest "Cases").
   RickerLawParameters table1(SecondPair sp = SecondPair::thesis)
   {
     RickerLawParameters p;
@@ -28,7 +29,7 @@ namespace
     return p;
   }
 
-  const double pitch = 2 * M_PI / 32;
+  const double pitch = 2 * gearfem::units::pi / 32;
 
   /// Minimum of the law's wavelet on [a, b] by dense sampling and golden-section refinement.
   std::pair<double, double> minimum(const RickerLoadSharingLaw &law, double x, double a, double b)
@@ -123,7 +124,7 @@ TEST(RickerLaw, ConstantStiffnessSharing)
       EXPECT_LE(s1, 1.0 + 1e-14);
     }
   const double L = law.single_contact_width(1e-5);
-  EXPECT_NEAR(law.mean_stiffness(), k0 * (2 - std::sqrt(3 * M_PI) * L / 8 / pitch),
+  EXPECT_NEAR(law.mean_stiffness(), k0 * (2 - std::sqrt(3 * gearfem::units::pi) * L / 8 / pitch),
               1e-9 * k0);
 }
 

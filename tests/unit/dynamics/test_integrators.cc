@@ -1,6 +1,7 @@
 // Integrator tests: convergence order, energy conservation, damped free decay, forced
 // steady state and event location, each against a closed form.
 #include "common.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -58,7 +59,7 @@ TEST(Integrators, ConvergenceOrder)
 }
 
 // Conservation law: undamped constant stiffness keeps E = m v^2/2 + k (d - d_s)^2/2.
-// Requirement (issue 6): relative drift <= 1e-6 over 1e4 periods for DOPRI5 at tight tolerance.
+// Requirement: relative drift <= 1e-6 over 1e4 periods for DOPRI5 at tight tolerance.
 TEST(Integrators, EnergyConservationDopri5)
 {
   const double m = 1.0, k = 1.0, F0 = 1.0;
@@ -76,7 +77,7 @@ TEST(Integrators, EnergyConservationDopri5)
   };
   const double E0 = energy(x);
   double t = 0;
-  const double T = 2 * M_PI * std::sqrt(m / k);
+  const double T = 2 * gearfem::units::pi * std::sqrt(m / k);
   integ.advance(model, x, t, 1e4 * T);
   const double drift = std::abs(energy(x) - E0) / E0;
   EXPECT_LE(drift, 1e-6);
@@ -95,7 +96,7 @@ TEST(Integrators, DampedFreeDecay)
       DteModel model = test::linear_oscillator(m, k, zeta, F0);
       IntegratorOptions o;
       o.method = meth;
-      o.step = (2 * M_PI / w) / (meth == Method::sdirk3 ? 2000 : 200);
+      o.step = (2 * gearfem::units::pi / w) / (meth == Method::sdirk3 ? 2000 : 200);
       o.rtol = 1e-11;
       Integrator integ(o);
       State x(2);
@@ -149,7 +150,7 @@ TEST(Integrators, EventLocation)
 {
   const double m = 1.0, k = 1e6, A = 1e-5, b = 2e-5;
   const double w = std::sqrt(k / m);
-  const double t1 = M_PI / (2 * w), t2 = t1 + b / (A * w);
+  const double t1 = gearfem::units::pi / (2 * w), t2 = t1 + b / (A * w);
   for (Method meth : {Method::rk4, Method::dopri5})
     {
       DteModel::Parameters p;
@@ -159,7 +160,7 @@ TEST(Integrators, EventLocation)
       DteModel model(std::make_unique<FourierStiffnessLaw>(k, 1, std::vector<double>{}), c, p);
       IntegratorOptions o;
       o.method = meth;
-      o.step = 2 * M_PI / w / 2000; // RK4 global error ~1e-13 relative
+      o.step = 2 * gearfem::units::pi / w / 2000; // RK4 global error ~1e-13 relative
       o.rtol = 1e-12;
       o.atol = 1e-20;
       Integrator integ(o);
@@ -179,7 +180,7 @@ TEST(Integrators, EventLocation)
     }
 }
 
-// Bad input (issue 6, sec. 6): step or tolerance <= 0 is an InputError naming the parameter.
+// Bad input: step or tolerance <= 0 is an InputError naming the parameter.
 TEST(Integrators, BadInput)
 {
   IntegratorOptions o;

@@ -155,7 +155,7 @@ TEST(KahramanSingh, SuperharmonicNearHalf)
   EXPECT_GT(pts[imax].response.rms, 1.5 * pts.back().response.rms);
 }
 
-// Bad input (issue 6, sec. 6): speed range min >= max, zeta < 0.
+// Bad input: speed range min >= max, zeta < 0.
 TEST(KahramanSingh, BadInput)
 {
   DteModel m = test::kahraman_singh(0.6);

@@ -1,5 +1,6 @@
 // Mesh-force laws and contact logic against closed forms.
 #include "common.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 
@@ -33,9 +34,9 @@ TEST(MeshForce, LocateZone)
 TEST(MeshForce, PiecewiseConstantZones)
 {
   const int z1 = 32;
-  const double eps = 1.72, thA = -9.2 * M_PI / 180;
+  const double eps = 1.72, thA = -9.2 * gearfem::units::deg;
   const PiecewiseConstantLaw law(4e8, 7e8, z1, eps, thA);
-  const double p = 2 * M_PI / z1;
+  const double p = 2 * gearfem::units::pi / z1;
   const int n = 200000;
   int n2 = 0;
   double ksum = 0;
@@ -120,7 +121,7 @@ TEST(MeshForce, StiffnessVersusLoadTable)
   t.kind = MeshTable::Kind::stiffness_vs_load;
   t.second_unit = "N";
   t.value_unit = "N/m";
-  t.period = 2 * M_PI / 25;
+  t.period = 2 * gearfem::units::pi / 25;
   t.base_radius = 0.03;
   for (int i = 0; i < 10; ++i)
     t.theta.push_back(t.period * i / 10);
@@ -135,7 +136,7 @@ TEST(MeshForce, StiffnessVersusLoadTable)
   EXPECT_NO_THROW(t.require_covers_load(2e3));
 }
 
-// Bad input (issue 6, sec. 6): missing axes, wrong units, geometry hash mismatch.
+// Bad input: missing axes, wrong units, geometry hash mismatch.
 TEST(MeshForce, TableBadInput)
 {
   FourierStiffnessLaw exact(5e8, 20, {});
@@ -164,7 +165,7 @@ TEST(MeshForce, TableBadInput)
   EXPECT_THROW(t.require_covers_load(1e9), gearfem::InputError);
 }
 
-// Contact logic (seed 000 4.9-4.11): states and the reverse-flank force.
+// Contact logic (Gkimisis 2019, 4.9-4.11): states and the reverse-flank force.
 TEST(MeshForce, ContactStatesAndReverseFlank)
 {
   ContactLogic c;
@@ -201,7 +202,7 @@ TEST(MeshForce, TwoSidedTableReverseBranch)
 {
   const double b = 5e-5, rb = 0.04, kd = 3e8, kr = 2e8;
   MeshTable t;
-  t.period = 2 * M_PI / 20, t.base_radius = rb, t.backlash = b;
+  t.period = 2 * gearfem::units::pi / 20, t.base_radius = rb, t.backlash = b;
   for (int i = 0; i < 16; ++i)
     t.theta.push_back(-0.1 + t.period * i / 16);
   const std::vector<double> d = {0, 1e-5, 2e-5, 4e-5};
@@ -237,10 +238,10 @@ TEST(MeshForce, TwoSidedTableReverseBranch)
 // STE excitation: the fluctuation has zero mean and is interpolated periodically.
 TEST(MeshForce, SteExcitation)
 {
-  const double p = 2 * M_PI / 20;
+  const double p = 2 * gearfem::units::pi / 20;
   std::vector<double> th, e;
   for (int i = 0; i < 40; ++i)
-    th.push_back(p * i / 40), e.push_back(1e-6 + 2e-7 * std::sin(2 * M_PI * i / 40));
+    th.push_back(p * i / 40), e.push_back(1e-6 + 2e-7 * std::sin(2 * gearfem::units::pi * i / 40));
   const SteExcitationLaw law(4e8, th, e, p);
   double mean = 0;
   for (int i = 0; i < 400; ++i)

@@ -1,5 +1,7 @@
-// 2-DOF torsional model (seed 000 4.1-4.2), tooth inertia and the seed 004 case.
+// 2-DOF torsional model (Gkimisis 2019, 4.1-4.2), tooth inertia and the case of the NTUA
+// tooth-mass thesis.
 #include "common.h"
+#include "base/units.h"
 
 #include "base/errors.h"
 #include "dynamics/pair_data.h"
@@ -12,15 +14,15 @@ using namespace gearfem::dynamics;
 
 namespace
 {
-  constexpr double deg = M_PI / 180;
+  constexpr double deg = gearfem::units::pi / 180;
 
-  /// Seed 004: z 20/40, m 2.5, alpha 20, b 30 mm, J from solid cylinders of pitch diameter
+  /// NTUA tooth-mass thesis: z 20/40, m 2.5, alpha 20, b 30 mm, J from solid cylinders of pitch diameter
   /// (rho 7850): J = pi rho b r^4 / 2.
   struct Seed004
   {
     PairData pair = standard_pair(20, 40, 2.5e-3, 20 * deg, 1.0, 0.5, 0.5, 0.0);
     double b = 0.03, rho = 7850;
-    double J(double r) const { return 0.5 * M_PI * rho * b * std::pow(r, 4); }
+    double J(double r) const { return 0.5 * gearfem::units::pi * rho * b * std::pow(r, 4); }
     double J1() const { return J(0.025); }
     double J2() const { return J(0.050); }
     /// ISO-like piecewise stiffness: k_single = c' b with c' = 14 N/(mm um) (ISO 6336-1
@@ -84,7 +86,7 @@ namespace
 } // namespace
 
 // Closed forms for a step load on two free inertias with constant stiffness k:
-// w^2 = k / m_eq, m_eq = I1 I2 / (I2 r1^2 + I1 r2^2) (seed 000), and
+// w^2 = k / m_eq, m_eq = I1 I2 / (I2 r1^2 + I1 r2^2) (Gkimisis 2019), and
 // th1 - w0 t = r1 F (1 - cos w t) / (I1 w^2), i.e. peak 2 r1 F m_eq / (I1 k).
 TEST(Models, TorsionalStepLoadClosedForm)
 {
@@ -102,12 +104,12 @@ TEST(Models, TorsionalStepLoadClosedForm)
   const double peak = *std::max_element(th1.begin(), th1.end());
   const double expected = 2 * s.pair.r_b1 * F * meq / (s.J1() * k);
   EXPECT_NEAR(peak, expected, 2e-3 * expected);
-  const double fn = std::sqrt(k / meq) / (2 * M_PI);
+  const double fn = std::sqrt(k / meq) / (2 * gearfem::units::pi);
   EXPECT_NEAR(m.linear_natural_frequency(), fn, 1e-12 * fn);
   EXPECT_NEAR(peak_frequency(delta, t_end / n, 10.0), fn, 1.0 / t_end + 1e-3 * fn);
 }
 
-// Seed 004 case (20/40, m 2.5, b 30, 160 rad/s, 100 N m, no damping, zero initial
+// Case of the NTUA tooth-mass thesis (20/40, m 2.5, b 30, 160 rad/s, 100 N m, no damping, zero initial
 // conditions): the mesh frequency z1 W / (2 pi) = 509.3 Hz appears as a spectral line of the
 // DTE, and the th1 vibration amplitude is of order 1e-4 rad (the thesis reports ~1e-4; the
 // constant-stiffness closed form r1 F m_eq / (I1 kbar) gives the scale).
@@ -115,7 +117,7 @@ TEST(Models, Seed004Case)
 {
   Seed004 s;
   TorsionalModel m = s.model(s.law());
-  const double f_mesh = 20 * 160 / (2 * M_PI);
+  const double f_mesh = 20 * 160 / (2 * gearfem::units::pi);
   EXPECT_NEAR(1.0 / m.mesh_period_time(), f_mesh, 1e-9 * f_mesh);
   EXPECT_NEAR(f_mesh, 509.3, 0.05); // the thesis value (independent: 20 x 160 / 2 pi)
   std::vector<double> th1, delta;
@@ -131,7 +133,7 @@ TEST(Models, Seed004Case)
   const double amplitude = 0.5 * (*hi - *lo);
   const double F = 100 / s.pair.r_b1;
   const double scale = s.pair.r_b1 * F * m.equivalent_mass() / (s.J1() * m.law().mean_stiffness());
-  std::cout << "seed 004: theta1 amplitude " << amplitude << " rad (constant-k scale " << scale
+  std::cout << "tooth-mass thesis case: theta1 amplitude " << amplitude << " rad (constant-k scale " << scale
             << "), f_n " << m.linear_natural_frequency() << " Hz\n";
   EXPECT_GT(amplitude, 0.5 * scale);
   EXPECT_LT(amplitude, 2.0 * scale);
@@ -139,7 +141,7 @@ TEST(Models, Seed004Case)
   EXPECT_LT(amplitude, 1e-3);
 }
 
-// Tooth inertia (seed 004): adding J_tooth lowers the natural frequency; the simulated
+// Tooth inertia (the NTUA tooth-mass thesis): adding J_tooth lowers the natural frequency; the simulated
 // frequency follows sqrt(k / m_eq) / (2 pi) with the increased inertias.
 TEST(Models, ToothMassLowersNaturalFrequency)
 {
@@ -165,23 +167,23 @@ TEST(Models, ToothMassLowersNaturalFrequency)
   EXPECT_NEAR(peak_frequency(delta, t_end / n, 10.0), b.linear_natural_frequency(), 1.0 / t_end);
 }
 
-// Contact-state logic in the 2-DOF torque-driven model (seed 000 Table 1 pair 32/60 m 3
+// Contact-state logic in the 2-DOF torque-driven model (Gkimisis 2019 Table 1 pair 32/60 m 3
 // b 30, piecewise stiffness until the analytical torque table exists): far below resonance
 // no contact loss; at the primary resonance the contact opens; the state sequence only
 // moves between neighbours (1 <-> 0 <-> -1) and never skips the gap.
 TEST(Models, Seed000ContactStates)
 {
   const PairData pair = standard_pair(32, 60, 3e-3, 20 * deg, 1.0, 0.49, 0.49, 0.0);
-  EXPECT_NEAR(pair.r_b1, 45.105e-3, 1e-6);          // seed 000: R_g1 = 45.105 mm
-  EXPECT_NEAR(pair.contact_ratio, 1.725, 0.01);     // seed 000: 1.72-1.73
+  EXPECT_NEAR(pair.r_b1, 45.105e-3, 1e-6);          // Gkimisis 2019: R_g1 = 45.105 mm
+  EXPECT_NEAR(pair.contact_ratio, 1.725, 0.01);     // Gkimisis 2019: 1.72-1.73
   const double b = 0.03, rho = 7860;
-  auto J = [&](double r) { return 0.5 * M_PI * rho * b * std::pow(r, 4); };
+  auto J = [&](double r) { return 0.5 * gearfem::units::pi * rho * b * std::pow(r, 4); };
   auto run = [&](double torque, double rpm, std::vector<int> &states) {
     TorsionalModel::Parameters p;
     p.inertia1 = J(0.048), p.inertia2 = J(0.090);
     p.base_radius1 = pair.r_b1, p.base_radius2 = pair.r_b2;
     p.input_torque = torque;
-    p.speed = rpm * 2 * M_PI / 60;
+    p.speed = rpm * 2 * gearfem::units::pi / 60;
     p.zeta = 0.02;
     p.ramp_time = 0.0;
     ContactLogic c;
@@ -203,7 +205,7 @@ TEST(Models, Seed000ContactStates)
   std::vector<int> s3;
   run(5, fn / 32 * 60, s3); // mesh frequency = linear natural frequency
   const long loss = std::count_if(s3.begin() + s3.size() / 2, s3.end(), [](int s) { return s != 1; });
-  std::cout << "seed 000 pair: f_n " << fn << " Hz, backlash " << pair.backlash * 1e3
+  std::cout << "Gkimisis 2019 pair: f_n " << fn << " Hz, backlash " << pair.backlash * 1e3
             << " mm; contact-loss samples at resonance " << loss << "/" << s3.size() / 2 << "\n";
   EXPECT_GT(loss, 0);
   for (std::size_t i = 1; i < s3.size(); ++i)

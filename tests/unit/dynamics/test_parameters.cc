@@ -1,6 +1,7 @@
 // The `Dynamics` parameter section: every example input parses and builds its model;
-// bad values give InputError naming the parameter (issue 6, sec. 6).
+// bad values give InputError naming the parameter.
 #include "base/errors.h"
+#include "base/units.h"
 #include "dynamics/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -68,7 +69,7 @@ TEST(DynamicsParameters, UnitsAreConverted)
   const DynamicsCase c = parse_text("subsection Dynamics\n subsection Operating\n"
                                     "  set Pinion speed = 600\n end\n subsection Pair\n"
                                     "  set Module = 3\n set Face width = 20\n end\nend\n");
-  EXPECT_NEAR(c.speed, 600 * 2 * M_PI / 60, 1e-12);
+  EXPECT_NEAR(c.speed, 600 * 2 * gearfem::units::pi / 60, 1e-12);
   EXPECT_NEAR(c.module, 3e-3, 1e-15);
   EXPECT_NEAR(c.face_width, 0.02, 1e-15);
   EXPECT_NEAR(c.single_pair_stiffness, 14e9, 1e-3);
@@ -124,7 +125,7 @@ TEST(DynamicsParameters, SteFromFeSweep)
                            (dir / "sweep.csv").string() + "\n end\n subsection Operating\n";
   const DynamicsCase c = parse_text(head + " set Input torque = 100\n end\nend\n");
   ASSERT_EQ(c.ste_theta.size(), 4u);
-  EXPECT_NEAR(c.ste_theta[1], -4 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(c.ste_theta[1], -4 * gearfem::units::deg, 1e-15);
   EXPECT_NEAR(c.ste_values[3], 4.5e-6, 1e-18);
   EXPECT_NEAR(c.ste_stiffness, 1400 / 3.75e-6, 1e-6 * 1400 / 3.75e-6); // mean F / mean STE
   std::vector<std::string> notes;

@@ -1,6 +1,7 @@
 // FEM module against closed-form elasticity solutions (plane stress):
 // Lame thick cylinder, Timoshenko-Goodier cantilever, annulus torsion, rigid rotation.
 #include "base/errors.h"
+#include "base/units.h"
 #include "fem/elastic_body.h"
 #include "mesh/domain.h"
 
@@ -171,7 +172,7 @@ TEST(FemClosedForms, AnnulusTorsionReactionTorque)
     [&](const Point<2> &x) { return Tensor<1, 2>({-tau * x[1] / x.norm(), tau * x[0] / x.norm()}); },
     {mesh::boundary::outer});
   const auto u      = body.solve(f);
-  const double T    = 2 * M_PI * b * b * tau * t;
+  const double T    = 2 * gearfem::units::pi * b * b * tau * t;
   const double Tf   = body.moment(f);
   const double Tr   = body.moment(body.reactions(u, f));
   std::cout << "torsion: closed form " << T << " N m, load " << Tf << ", reaction " << Tr << std::endl;
@@ -179,7 +180,7 @@ TEST(FemClosedForms, AnnulusTorsionReactionTorque)
   EXPECT_NEAR(Tr, -Tf, 1e-8 * T);
   const auto ut       = body.displacement_at(u, Point<2>(0, b));
   const double mu     = E / (2 * (1 + nu));
-  const double ut_ref = T / (4 * M_PI * mu * t) * (b / (a * a) - 1 / b);
+  const double ut_ref = T / (4 * gearfem::units::pi * mu * t) * (b / (a * a) - 1 / b);
   EXPECT_NEAR(-ut[0], ut_ref, 2e-3 * ut_ref);
 
   // MUMPS and UMFPACK give the same solution.

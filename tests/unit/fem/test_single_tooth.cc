@@ -3,7 +3,7 @@
 // full gear. The refined studies for z = 19, 100 and x = +0.5 are in
 // validation/single_tooth_root_stress (label long).
 #include "analytical/from_geometry.h"
-#include "analytical/iso6336.h"
+#include "rating/iso6336.h"
 #include "base/units.h"
 #include "fem/tooth_load.h"
 
@@ -26,16 +26,16 @@ namespace
     g.name                = "Gear 1";
     g.teeth               = z;
     g.profile_shift       = x;
-    g.face_width          = 20 * units::mm;
-    g.rack.module         = 3 * units::mm;
-    g.rack.pressure_angle = 20 * units::deg;
+    g.face_width          = 20 * gearfem::units::mm;
+    g.rack.module         = 3 * gearfem::units::mm;
+    g.rack.pressure_angle = 20 * gearfem::units::deg;
     return geometry::ToothProfile::generate(g);
   }
 
   /// ISO 6336-3 nominal tooth-root stress for tip loading: F_t/(b m) Y_Fa Y_Sa [Pa].
   double iso_tip_stress(const geometry::ToothProfile &tooth, double Ft)
   {
-    namespace iso = analytical::iso6336;
+    namespace iso = gearfem::rating::iso6336;
     const auto &g   = tooth.parameters();
     const auto cs   = iso::critical_section(analytical::fillet_curve(tooth));
     const auto inv  = analytical::involute_tooth(tooth);

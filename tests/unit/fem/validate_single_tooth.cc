@@ -4,7 +4,7 @@
 // Reference: ISO 6336-3 (2006) method B, F_t/(b m) Y_Fa Y_Sa (lib/analytical), +-10 %.
 // Writes results.csv to $GEARFEM_VALIDATION_OUT (default: the current folder).
 #include "analytical/from_geometry.h"
-#include "analytical/iso6336.h"
+#include "rating/iso6336.h"
 #include "base/table.h"
 #include "base/units.h"
 #include "fem/tooth_load.h"
@@ -25,10 +25,10 @@ TEST(SingleToothValidation, IsoTipLoadOverTeethAndShift)
   for (const auto &[z, x] : std::vector<std::pair<int, double>>{{19, 0.0}, {50, 0.0}, {100, 0.0}, {50, 0.5}})
     {
       geometry::GearParameters g;
-      g.name = "Gear 1", g.teeth = z, g.profile_shift = x, g.face_width = 20 * units::mm;
-      g.rack.module = 3 * units::mm, g.rack.pressure_angle = 20 * units::deg;
+      g.name = "Gear 1", g.teeth = z, g.profile_shift = x, g.face_width = 20 * gearfem::units::mm;
+      g.rack.module = 3 * gearfem::units::mm, g.rack.pressure_angle = 20 * gearfem::units::deg;
       const auto tooth = geometry::ToothProfile::generate(g);
-      namespace iso    = analytical::iso6336;
+      namespace iso = gearfem::rating::iso6336;
       const auto cs    = iso::critical_section(analytical::fillet_curve(tooth));
       const auto inv   = analytical::involute_tooth(tooth);
       const auto rf    = iso::root_factors(cs, {inv.rb, inv.psi_b}, tooth.radii().tip, g.rack.module,

@@ -1,5 +1,6 @@
 // Curves, conjugate generation and its inverse: exactness checks against closed forms.
 #include "base/errors.h"
+#include "base/units.h"
 #include "geometry/conjugate.h"
 #include "geometry/curve.h"
 
@@ -68,9 +69,9 @@ TEST(Curves, ClosestParameterOnArc)
 // and InverseConjugateCurve ("involutisation") recovers the straight rack from it.
 TEST(Conjugate, InverseRecoversStraightRack)
 {
-  const double a = 20 * M_PI / 180, r0 = 0.05, m = 0.005;
-  auto rack = std::make_shared<LineSegment>(Vec2(m * M_PI / 4 - m * std::tan(a), m),
-                                            Vec2(m * M_PI / 4 + m * std::tan(a), -m));
+  const double a = 20 * gearfem::units::deg, r0 = 0.05, m = 0.005;
+  auto rack = std::make_shared<LineSegment>(Vec2(m * gearfem::units::pi / 4 - m * std::tan(a), m),
+                                            Vec2(m * gearfem::units::pi / 4 + m * std::tan(a), -m));
   auto gear = std::make_shared<ConjugateCurve>(rack, r0);
   for (double t : {0.1, 0.4, 0.7})
     {

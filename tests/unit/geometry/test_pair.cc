@@ -1,6 +1,7 @@
-// Pair kinematics against the seeds' published numbers and against independent
+// Pair kinematics against the source theses' published numbers and against independent
 // computations (conjugate search, law of gearing, outline-measured backlash).
 #include "geometry/pair.h"
+#include "base/units.h"
 #include "base/errors.h"
 
 #include <Eigen/Geometry>
@@ -13,7 +14,7 @@ using namespace gearfem::geometry;
 
 namespace
 {
-  const double deg = M_PI / 180, mm = 1e-3;
+  const double deg = gearfem::units::pi / 180, mm = 1e-3;
 
   GearParameters gear(const std::string &name, int z, double m, double x = 0)
   {
@@ -36,12 +37,12 @@ namespace
 
   /// The B-spline rack used for the non-involute checks: a 20 deg rack flank with a hollow
   /// of 0.03 m (steeper near the tooth root, so no undercut for z = 19), degree 4,
-  /// 5 control points (seed 003 case 1 shape).
+  /// 5 control points (Koronaios 2021 case 1 shape).
   std::vector<Vec2> bulged_rack()
   {
     std::vector<Vec2> cp;
     for (double v : {1.0, 0.5, 0.0, -0.5, -1.0})
-      cp.emplace_back(M_PI / 4 - v * std::tan(20 * deg) - 0.03 * (1 - v * v), v);
+      cp.emplace_back(gearfem::units::pi / 4 - v * std::tan(20 * deg) - 0.03 * (1 - v * v), v);
     return cp;
   }
 
@@ -77,7 +78,7 @@ namespace
   }
 } // namespace
 
-// Seed 000 (Gkimisis 2019), Table 1 pair: 32/60, m 3, alpha 20 deg: R_g1 = 45.105 mm and
+// Gkimisis 2019, Table 1 pair: 32/60, m 3, alpha 20 deg: R_g1 = 45.105 mm and
 // contact ratio 1.72-1.73.
 TEST(Pair, Seed000Table1)
 {
@@ -85,11 +86,11 @@ TEST(Pair, Seed000Table1)
   EXPECT_NEAR(pair.base_radius(1), 45.105 * mm, 0.0005 * mm);
   EXPECT_GE(pair.contact_ratio(), 1.72);
   EXPECT_LE(pair.contact_ratio(), 1.73);
-  std::cout << "[seed 000] R_g1 = " << pair.base_radius(1) / mm
+  std::cout << "[Gkimisis 2019] R_g1 = " << pair.base_radius(1) / mm
             << " mm, eps = " << pair.contact_ratio() << std::endl;
 }
 
-// Seed 001 (Siasos 2010), 23/69, m 4 (AGMA 908): C2, C3, C4 per unit module 3.33, 3.93,
+// Siasos 2010, 23/69, m 4 (AGMA 908): C2, C3, C4 per unit module 3.33, 3.93,
 // 4.22 and contact ratio ~1.70.
 TEST(Pair, Seed001LineOfAction)
 {
@@ -100,7 +101,7 @@ TEST(Pair, Seed001LineOfAction)
   EXPECT_NEAR(c3, 3.93, 0.005);
   EXPECT_NEAR(c4, 4.22, 0.005);
   EXPECT_NEAR(pair.contact_ratio(), 1.70, 0.01);
-  std::cout << "[seed 001] C2 = " << c2 << ", C3 = " << c3 << ", C4 = " << c4
+  std::cout << "[Siasos 2010] C2 = " << c2 << ", C3 = " << c3 << ", C4 = " << c4
             << ", eps = " << pair.contact_ratio() << std::endl;
   // Independent: the LoA points lie on their circles (A on gear 2's tip, E on the pinion's).
   EXPECT_NEAR(pair.point("E").r1, 50 * mm, 1e-12);
@@ -111,7 +112,7 @@ TEST(Pair, Seed001LineOfAction)
   EXPECT_NEAR(pair.tip_clearance(1), 0.25 * m, 1e-12); // a - ra1 - rf2 = c* m
 }
 
-// Seed 003 (Koronaios 2021), 19/55, m 2.5: pitch-point equivalent curvature 0.1656 1/mm
+// Koronaios 2021, 19/55, m 2.5: pitch-point equivalent curvature 0.1656 1/mm
 // (digest's recomputation) and contact ratio 1.657.
 TEST(Pair, Seed003Curvature)
 {
@@ -119,7 +120,7 @@ TEST(Pair, Seed003Curvature)
   const double k    = pair.equivalent_curvature(0.0) * mm;
   EXPECT_NEAR(k, 0.1656, 0.0001);
   EXPECT_NEAR(pair.contact_ratio(), 1.657, 0.001);
-  std::cout << "[seed 003] 1/R(C) = " << k << " 1/mm, eps = " << pair.contact_ratio() << std::endl;
+  std::cout << "[Koronaios 2021] 1/R(C) = " << k << " 1/mm, eps = " << pair.contact_ratio() << std::endl;
   // Independent: the profile curvatures of the generated outlines at the pitch point.
   double kp = 0;
   for (int i : {1, 2})
@@ -164,7 +165,7 @@ TEST(Pair, BacklashMatchesOutline)
   g2.thickness_allowance = 0.08 * mm;
   GearPair pair(ToothProfile::generate(g1), ToothProfile::generate(g2), PairParameters{88.4 * mm});
   const double rw1 = pair.working_pitch_radius(1), rw2 = pair.working_pitch_radius(2);
-  const double jt  = 2 * M_PI * rw1 / 21 - pair.gear(1).thickness_at_radius(rw1) -
+  const double jt  = 2 * gearfem::units::pi * rw1 / 21 - pair.gear(1).thickness_at_radius(rw1) -
                     pair.gear(2).thickness_at_radius(rw2);
   EXPECT_NEAR(pair.circumferential_backlash(), jt, 1e-12);
   EXPECT_NEAR(pair.normal_backlash(), jt * std::cos(pair.working_pressure_angle()), 1e-12);
@@ -185,7 +186,7 @@ TEST(Pair, BacklashMatchesOutline)
 TEST(Pair, ConjugateSearchAndLawOfGearingInvolute)
 {
   const auto pair = make_pair(19, 55, 2.5 * mm, 0.2, 0.1, 0);
-  for (double phi1 = -M_PI / 19; phi1 <= M_PI / 19 + 1e-12; phi1 += M_PI / 19 / 4)
+  for (double phi1 = -gearfem::units::pi / 19; phi1 <= gearfem::units::pi / 19 + 1e-12; phi1 += gearfem::units::pi / 19 / 4)
     {
       EXPECT_NEAR(pair.conjugate_angle_by_search(phi1), pair.conjugate_angle(phi1), 1e-10)
         << "phi1 " << phi1;
@@ -193,7 +194,7 @@ TEST(Pair, ConjugateSearchAndLawOfGearingInvolute)
     }
 }
 
-// Law of gearing for a B-spline rack pair (seed 003 case 1 construction): gear 1 from the
+// Law of gearing for a B-spline rack pair (Koronaios 2021 case 1 construction): gear 1 from the
 // B-spline rack, gear 2 from the complementary rack, gear 2 placed by the search.
 TEST(Pair, LawOfGearingBSplineRack)
 {
@@ -209,7 +210,7 @@ TEST(Pair, LawOfGearingBSplineRack)
   const double phiA = pair.point("A").roll_angle, phiE = pair.point("E").roll_angle;
   EXPECT_LT(phiA, 0.0);
   EXPECT_GT(phiE, 0.0);
-  for (double phi1 = -M_PI / 19; phi1 <= M_PI / 19 + 1e-12; phi1 += M_PI / 19 / 4)
+  for (double phi1 = -gearfem::units::pi / 19; phi1 <= gearfem::units::pi / 19 + 1e-12; phi1 += gearfem::units::pi / 19 / 4)
     EXPECT_LT(gearing_residual(pair, phi1), 1e-9) << "phi1 " << phi1;
   // The transmission is uniform: gear 2 turns by exactly -phi1 z1/z2 (conjugate racks).
   const double b0 = pair.conjugate_angle(0.0), b1 = pair.conjugate_angle(0.1);
@@ -224,7 +225,7 @@ TEST(Pair, LawOfGearingBSplineRack)
             0.001 / mm);
 }
 
-// B-spline flank (seed 003 case 2): the gear-1 flank is the spline itself; its rack is
+// B-spline flank (Koronaios 2021 case 2): the gear-1 flank is the spline itself; its rack is
 // recovered by involutisation and the mate is generated from the complementary rack.
 // An involute given as a B-spline-free control polygon is not exact, so we check the
 // law of gearing and that the gear-1 flank passes through its control-point spline.
@@ -244,18 +245,18 @@ TEST(Pair, BSplineFlankPair)
   const auto p1          = ToothProfile::generate(g1);
   const auto p2          = ToothProfile::generate_mate(g2, p1);
   GearPair   pair(p1, p2, PairParameters{});
-  for (double phi1 = -M_PI / 19; phi1 <= M_PI / 19 + 1e-12; phi1 += M_PI / 19 / 4)
+  for (double phi1 = -gearfem::units::pi / 19; phi1 <= gearfem::units::pi / 19 + 1e-12; phi1 += gearfem::units::pi / 19 / 4)
     EXPECT_LT(gearing_residual(pair, phi1), 1e-9) << "phi1 " << phi1;
   EXPECT_NEAR(pair.contact_ratio(), make_pair(19, 55, m).contact_ratio(), 0.05);
 }
 
-// Seed 003's case-2 optimum (gearfem optimise, SLSQP): a B-spline flank whose recovered
-// rack presses the cutter-tip constraint, so the cutter tip is a full round (no root land on
+// The case-2 optimum of Koronaios 2021 (gearfem optimise, SLSQP): a B-spline flank whose
+// recovered rack presses the cutter-tip constraint, so the cutter tip is a full round (no root land on
 // the pinion; Profile.FullRoundCutterTip). Gear 2 is generated from the complementary
 // rack, so the transmission is exactly uniform (conservation of the conjugate motion):
 // the gap-closing search must give beta = beta_A - (phi1 - phi_A) z1/z2 over the whole mesh
-// cycle. It used to land two gear-2 pitches away at 4 of 20 positions (a wrong tooth
-// reduction in the gap), which put the FE sector's teeth out of mesh (STE 350-580 um).
+// cycle. Landing two gear-2 pitches away (at 4 of 20 positions, a wrong tooth reduction in
+// the gap) would put the FE sector's teeth out of mesh (STE 350-580 um).
 TEST(Pair, ConjugateSearchWholeCycleSeed003Case2Optimum)
 {
   auto g1 = gear("Gear 1", 19, 2.5 * mm), g2 = gear("Gear 2", 55, 2.5 * mm);
@@ -272,7 +273,7 @@ TEST(Pair, ConjugateSearchWholeCycleSeed003Case2Optimum)
   const double phiA = pair.point("A").roll_angle, b0 = pair.conjugate_angle(phiA);
   for (int k = 0; k <= 40; ++k)
     {
-      const double phi1 = phiA + 2 * M_PI / 19 * k / 40;
+      const double phi1 = phiA + 2 * gearfem::units::pi / 19 * k / 40;
       EXPECT_NEAR(pair.conjugate_angle(phi1), b0 - (phi1 - phiA) * 19.0 / 55.0, 1e-9) << "position " << k;
       EXPECT_LT(gearing_residual(pair, phi1), 1e-9) << "position " << k;
     }
@@ -302,7 +303,7 @@ TEST(Pair, DesignChecks)
   expect_error([] { make_pair(20, 40, 3 * mm, 0, 0, 88 * mm); }, "Pair/Centre distance");
 }
 
-// Closed racks (seed 003 case 1 and the sinusoid: a level crest on the tooth axis, a level
+// Closed racks (Koronaios 2021 case 1 and the sinusoid: a level crest on the tooth axis, a level
 // trough in the middle of the cutter tooth; no cutter tip). The case-1 start, the sinusoid
 // fit (0, 1), (pi/8, 1), (pi/4, 0), (3pi/8, -1), (pi/2, -1) in module units.
 TEST(Pair, ClosedRackTeethAndRefusedPath)
@@ -311,7 +312,7 @@ TEST(Pair, ClosedRackTeethAndRefusedPath)
   auto         g1 = gear("Gear 1", 19, m);
   auto         g2 = gear("Gear 2", 55, m);
   g1.rack.kind           = RackParameters::Kind::bspline_rack;
-  g1.rack.control_points = {{0, 1}, {M_PI / 8, 1}, {M_PI / 4, 0}, {3 * M_PI / 8, -1}, {M_PI / 2, -1}};
+  g1.rack.control_points = {{0, 1}, {gearfem::units::pi / 8, 1}, {gearfem::units::pi / 4, 0}, {3 * gearfem::units::pi / 8, -1}, {gearfem::units::pi / 2, -1}};
   g1.rack.dedendum       = 1.0;
   g1.tip_shortening = g2.tip_shortening = 0.05;
   const auto rack = GeneratingRack::from_parameters(g1);
@@ -327,7 +328,7 @@ TEST(Pair, ClosedRackTeethAndRefusedPath)
   EXPECT_EQ(f.point(f.t_end()), fi.point(fi.t_begin()));
   EXPECT_NEAR(fi.curvature(fi.t_begin()) * m, 0.0, 1e-9);
   EXPECT_NEAR(rack.root_line(), -m, 1e-15);
-  EXPECT_NEAR(rt.point(rt.t_end()).x(), M_PI * m / 2, 1e-15);
+  EXPECT_NEAR(rt.point(rt.t_end()).x(), gearfem::units::pi * m / 2, 1e-15);
 
   // The teeth: root circle at the trough (r0 - m), tip circle r0 + (1 - 0.05) m; the
   // outline is continuous and the root ends in the middle of the tooth space (pi/z from
@@ -344,7 +345,7 @@ TEST(Pair, ClosedRackTeethAndRefusedPath)
       for (std::size_t i = 0; i + 1 < segs.size(); ++i)
         EXPECT_LT((segs[i].end() - segs[i + 1].start()).norm(), 1e-9 * m) << "joint " << i;
       const Vec2 q = segs.front().start();
-      EXPECT_NEAR(std::atan2(q.x(), q.y()), M_PI / z, 1e-9);
+      EXPECT_NEAR(std::atan2(q.x(), q.y()), gearfem::units::pi / z, 1e-9);
       EXPECT_NEAR(q.norm(), r0 - m, 1e-9 * m);
       // The form circle is the lowest conjugate point: the end of the fillet.
       EXPECT_LT(p->radii().form, r0 - 0.5 * m);

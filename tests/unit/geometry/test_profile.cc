@@ -1,6 +1,7 @@
-// Tooth generation against closed forms: involute, Siasos trochoid (seed 001), undercut
-// limit (seed 001), key radii (seed 001), tip relief.
+// Tooth generation against closed forms: involute, trochoid, undercut limit and key radii
+// (all Siasos 2010), tip relief.
 #include "geometry/conjugate.h"
+#include "base/units.h"
 #include "geometry/pair.h"
 #include "geometry/profile.h"
 #include "base/errors.h"
@@ -15,7 +16,7 @@ namespace cf = gearfem::geometry::closed_form;
 
 namespace
 {
-  const double deg = M_PI / 180, mm = 1e-3;
+  const double deg = gearfem::units::pi / 180, mm = 1e-3;
 
   GearParameters gear(int z, double x, double m = 3 * mm)
   {
@@ -33,7 +34,7 @@ namespace
   double psi_b(const GearParameters &g)
   {
     const double m = g.rack.module, a = g.rack.pressure_angle;
-    const double s = M_PI * m / 2 + 2 * g.profile_shift * m * std::tan(a) - g.thickness_allowance;
+    const double s = gearfem::units::pi * m / 2 + 2 * g.profile_shift * m * std::tan(a) - g.thickness_allowance;
     return s / (2 * g.reference_radius()) + cf::inv(a);
   }
 
@@ -45,7 +46,7 @@ namespace
     return (p - cf::involute(rb, psi_b(g), xi)).norm();
   }
 
-  /// Distance of p from the closed-form trochoid (seed 001), minimised over theta.
+  /// Distance of p from the closed-form trochoid (Siasos 2010), minimised over theta.
   double trochoid_distance(const GearParameters &g, const Vec2 &p)
   {
     const double m = g.rack.module, a = g.rack.pressure_angle, x = g.profile_shift;
@@ -53,7 +54,7 @@ namespace
     const double hf = (g.rack.dedendum - x) * m;
     // Cutter tip-arc centre (rack coordinates): on the tip line + rc, rc from the flank.
     const double vc = -hf + rc;
-    const double uc = M_PI * m / 4 + (x * m - vc) * std::tan(a) + rc / std::cos(a);
+    const double uc = gearfem::units::pi * m / 4 + (x * m - vc) * std::tan(a) + rc / std::cos(a);
     const double th_max = 2 * (std::abs(vc) / (r0 * std::tan(a)) + 1e-3);
     auto d = [&](double th) { return (cf::trochoid_gear_frame(r0, rc, hf, uc, th) - p).norm(); };
     double best = 1e9, bt = 0;
@@ -77,8 +78,8 @@ namespace
   }
 } // namespace
 
-// Issue 2, section 5: generated flank = closed-form involute and generated fillet =
-// closed-form trochoid (seed 001, Siasos 2010), both <= 1e-9 m, for z = 12 (undercut),
+// Generated flank = closed-form involute and generated fillet =
+// closed-form trochoid (Siasos 2010), both <= 1e-9 m, for z = 12 (undercut),
 // 19, 50, 100 and x = -0.3, 0, +0.5.
 TEST(Profile, GeneratedFlankAndFilletMatchClosedForms)
 {
@@ -114,7 +115,7 @@ TEST(Profile, GeneratedFlankAndFilletMatchClosedForms)
             << " m, max |fillet - trochoid| = " << worst_tro << " m" << std::endl;
 }
 
-// Seed 001: Z_min = 18.56 for x = 0, alpha = 20 deg, h_fP* = 1.25, rho_fP* = 0.25, and the
+// Siasos 2010: Z_min = 18.56 for x = 0, alpha = 20 deg, h_fP* = 1.25, rho_fP* = 0.25, and the
 // generation itself agrees: for each z the limiting shift found by bisection on the
 // generator's undercut detection equals the one from the formula.
 TEST(Profile, UndercutLimitFromGeneration)
@@ -142,7 +143,7 @@ TEST(Profile, UndercutLimitFromGeneration)
     }
 }
 
-// Seed 001, 23/69, m 4: tip and root radii 50/41 mm and 142/133 mm.
+// Siasos 2010, 23/69, m 4: tip and root radii 50/41 mm and 142/133 mm.
 TEST(Profile, KeyRadiiSeed001)
 {
   const auto p1 = ToothProfile::generate(gear(23, 0, 4 * mm));
@@ -171,7 +172,7 @@ TEST(Profile, ThicknessAndOutlineConsistency)
   g.thickness_allowance = 0.1 * mm;
   const auto   tp = ToothProfile::generate(g);
   const double r0 = g.reference_radius(), a = 20 * deg, m = 3 * mm;
-  const double s  = M_PI * m / 2 + 2 * 0.2 * m * std::tan(a) - 0.1 * mm;
+  const double s  = gearfem::units::pi * m / 2 + 2 * 0.2 * m * std::tan(a) - 0.1 * mm;
   for (double r : {r0 - 1 * mm, r0, r0 + 2 * mm})
     {
       const double ar = std::acos(r0 * std::cos(a) / r);
@@ -182,8 +183,8 @@ TEST(Profile, ThicknessAndOutlineConsistency)
   for (std::size_t i = 0; i + 1 < seg.size(); ++i)
     EXPECT_LT((seg[i].end() - seg[i + 1].start()).norm(), 1e-12) << "joint " << i;
   // First point at polar angle pi/2 - pi/z, last at pi/2 + pi/z, on the root circle.
-  EXPECT_NEAR(std::atan2(seg.front().start().y(), seg.front().start().x()), M_PI / 2 - M_PI / 27, 1e-12);
-  EXPECT_NEAR(std::atan2(seg.back().end().y(), seg.back().end().x()), M_PI / 2 + M_PI / 27, 1e-12);
+  EXPECT_NEAR(std::atan2(seg.front().start().y(), seg.front().start().x()), gearfem::units::pi / 2 - gearfem::units::pi / 27, 1e-12);
+  EXPECT_NEAR(std::atan2(seg.back().end().y(), seg.back().end().x()), gearfem::units::pi / 2 + gearfem::units::pi / 27, 1e-12);
   // Shoelace area of one tooth sector outline (with the origin) is positive (CCW), and each
   // normal points away from the tooth axis on the flanks.
   const auto pts  = tp.sample(0.05 * mm);
@@ -213,7 +214,7 @@ TEST(Profile, ThicknessAndOutlineConsistency)
       EXPECT_NEAR(tp.half_width_at_height(q.p.y()), q.p.x(), 1e-12);
 }
 
-// Issue 2, section 5: tip relief. The deviation of the outline from the closed-form
+// Tip relief: the deviation of the outline from the closed-form
 // involute (normal, = rb times the polar-angle difference at equal radius) equals C_a at
 // the tip, follows the linear / parabolic law in roll angle, and is zero below the start.
 TEST(Profile, TipReliefDeviation)
@@ -309,7 +310,7 @@ TEST(Profile, UndercutDepthBySweptRack)
       const auto   tp = ToothProfile::generate(g);
       const double m = 3 * mm, a = 20 * deg, r0 = g.reference_radius(), rb = r0 * std::cos(a);
       const double rho = 0.25 * m, vt = -1.25 * m, vc = vt + rho;
-      auto         ufl = [&](double v) { return M_PI * m / 4 - v * std::tan(a); };
+      auto         ufl = [&](double v) { return gearfem::units::pi * m / 4 - v * std::tan(a); };
       const double uc = ufl(vc) + rho / std::cos(a), vtan = vc - rho * std::sin(a);
       const Vec2   q  = cf::involute(rb, psi_b(g), 0.0); // the cusp
       auto pen = [&](double s) {
@@ -400,7 +401,7 @@ TEST(Profile, FullRoundCutterTip)
   for (const double z : {19.0, 40.0})
     {
       auto         g   = gear(int(z), 0.0);
-      const double m = g.rack.module, a = g.rack.pressure_angle, p = M_PI * m;
+      const double m = g.rack.module, a = g.rack.pressure_angle, p = gearfem::units::pi * m;
       const double u_tip   = p / 4 + g.rack.dedendum * m * std::tan(a);
       const double rho_max = (p / 2 - u_tip) * std::cos(a) / (1 - std::sin(a));
       for (const double d_rho : {0.0, -0.5e-3 * m, 0.5e-3 * m, -0.02 * m})
@@ -419,7 +420,7 @@ TEST(Profile, FullRoundCutterTip)
             EXPECT_LT((sg[i].end() - sg[i + 1].start()).norm(), 1e-12) << "joint " << i;
           const double rf = tp.radii().root;
           EXPECT_NEAR(rf, g.reference_radius() - g.rack.dedendum * m, 1e-12);
-          EXPECT_NEAR(std::atan2(sg.front().start().y(), sg.front().start().x()), M_PI / 2 - M_PI / z, 1e-12);
+          EXPECT_NEAR(std::atan2(sg.front().start().y(), sg.front().start().x()), gearfem::units::pi / 2 - gearfem::units::pi / z, 1e-12);
           EXPECT_NEAR(sg.front().start().norm(), rf, 1e-12);
           if (full)
             {

@@ -2,6 +2,7 @@
 // writer (the HDF5 C API with fixed-length strings, as a Python h5py user may write),
 // every bad-input case named in the error, and atomic writes.
 #include "base/errors.h"
+#include "base/units.h"
 #include "dynamics/mesh_force.h"
 #include "io/mesh_table_io.h"
 
@@ -57,7 +58,7 @@ namespace
   {
     MeshTable t;
     t.kind = MeshTable::Kind::torque_vs_compression;
-    t.period = 2 * M_PI / 32;
+    t.period = 2 * gearfem::units::pi / 32;
     t.base_radius = 0.045105 / 3.0 * 3.0 + 1.0 / 3.0 * 1e-6;
     const int nt = 16;
     for (int i = 0; i < nt; ++i)
@@ -77,7 +78,7 @@ namespace
   {
     MeshTable t;
     t.kind = MeshTable::Kind::stiffness_vs_load;
-    t.period = 2 * M_PI / 20;
+    t.period = 2 * gearfem::units::pi / 20;
     t.base_radius = 0.0281907;
     const int nt = 12;
     for (int i = 0; i < nt; ++i)
@@ -534,7 +535,7 @@ TEST_F(MeshTableIo, SteTable)
   EXPECT_THROW(TableLaw(r, ThetaInterpolation::linear), InputError);
 }
 
-// Issue 13: no NaN or inf reaches an HDF5 table; nothing is left behind.
+// No NaN or inf reaches an HDF5 table; nothing is left behind.
 TEST_F(MeshTableIo, RefusesNonFiniteValues)
 {
   for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})

@@ -1,5 +1,5 @@
 // The solve-results contract (io/solve_results.h): the writer refuses non-finite values
-// and leaves no file behind (issue 13), and a write/read round trip through results.h5 is
+// and leaves no file behind, and a write/read round trip through results.h5 is
 // bit-exact (a conservation check: the reader must return what the writer was given).
 #include "io/solve_results.h"
 

@@ -1,6 +1,6 @@
 #!/bin/sh
-# `gearfem mesh`: the sample run writes the meshes, and each bad input from issue 3
-# section 5 exits with status 2 and writes no files. Usage: mesh_cli.sh <gearfem> <source dir>
+# `gearfem mesh`: the sample run writes the meshes, and each bad input below
+# exits with status 2 and writes no files. Usage: mesh_cli.sh <gearfem> <source dir>
 gearfem=$1; src=$2; tmp=$(mktemp -d); fail=0
 "$gearfem" mesh "$src/inputs/mesh_demo.prm" --output-dir "$tmp/ok" > /dev/null || fail=1
 for f in gear1.msh gear2.msh mesh_quality.csv; do [ -s "$tmp/ok/$f" ] || { echo "missing $f"; fail=1; }; done

@@ -54,7 +54,7 @@ TEST(MeshDomain, AnnulusIdsManifoldsAndRefinement)
   EXPECT_GT(ids[mesh::boundary::bore], 10);
   EXPECT_GT(ids[mesh::boundary::outer], 10);
 
-  // Issue requirement: after 2 global refinements the boundary vertices lie on the exact
+  // Requirement: after 2 global refinements the boundary vertices lie on the exact
   // curve to <= 1e-9 m (here: the circles, by their radius).
   tria.refine_global(2);
   double worst = 0;

@@ -1,8 +1,9 @@
-// Seed 003 statistics and the curvature route (lib/optimise/kinematics.h, design.h).
+// Koronaios 2021 statistics and the curvature route (lib/optimise/kinematics.h, design.h).
 // Independent references: the involute closed forms (1/rho1 + 1/rho2 on the line of action,
 // eps from the line of action), gear 2's own conjugate curve from the complementary rack
-// (direct curvature, no Euler-Savary), and the thesis' Tables 5.2 and 6.1 (seed 003).
+// (direct curvature, no Euler-Savary), and the thesis' Tables 5.2 and 6.1 (Koronaios 2021).
 #include "geometry/conjugate.h"
+#include "base/units.h"
 #include "optimise/design.h"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,7 @@ TEST(Kinematics, EulerSavaryMatchesGearTwoConjugate)
       const Design d(kind, seed003);
       const auto x = d.default_start();
       const auto rk = d.rack(x);
-      const double p = M_PI * seed003.module;
+      const double p = gearfem::units::pi * seed003.module;
       Eigen::Matrix2d M;
       M << -1, 0, 0, -1;
       auto comp = std::make_shared<geometry::AffineCurve>(rk, M, Vec2(p / 2, 0.0), true);
@@ -106,7 +107,7 @@ TEST(Statistics, InvoluteRowOfTable61)
   const double rb2 = seed003.r02() * std::cos(a);
   const double ra1 = seed003.tip_radius(1), ra2 = seed003.tip_radius(2);
   const double eps = (std::sqrt(ra1 * ra1 - rb1 * rb1) + std::sqrt(ra2 * ra2 - rb2 * rb2) -
-                      (seed003.r01() + seed003.r02()) * std::sin(a)) / (M_PI * seed003.module * std::cos(a));
+                      (seed003.r01() + seed003.r02()) * std::sin(a)) / (gearfem::units::pi * seed003.module * std::cos(a));
   EXPECT_NEAR(e2.contact_ratio, eps, 1e-9);
   EXPECT_TRUE(e2.feasible) << e2.reason;
 }
@@ -127,7 +128,7 @@ TEST(Statistics, SinusoidRowOfTable52)
   // extremes where cos(4u/m) = 1/4: eps = (K_max - K_min)/(pi m).
   const double m = seed003.module, c = std::acos(0.25);
   auto K = [&](double u) { return -u + m * std::sin(4 * u / m); };
-  const double eps = (K(c * m / 4) - K((2 * M_PI - c) * m / 4)) / (M_PI * m);
+  const double eps = (K(c * m / 4) - K((2 * gearfem::units::pi - c) * m / 4)) / (gearfem::units::pi * m);
   EXPECT_NEAR(ev.contact_ratio, eps, 1e-6);
 }
 
@@ -157,7 +158,7 @@ TEST(Design, StartPointsAndNamedInfeasibility)
   EXPECT_TRUE(d1.evaluate(d1.default_start(), low).feasible);
   // A rack that is not a function v(u) (u1 beyond u2 and u3) cannot be evaluated: named, no throw.
   auto xr = d1.default_start();
-  xr = {M_PI / 8, 1.5, 0.0, -0.3};
+  xr = {gearfem::units::pi / 8, 1.5, 0.0, -0.3};
   const Evaluation er = d1.evaluate(xr, low);
   EXPECT_FALSE(er.feasible);
   EXPECT_NE(er.reason.find("rack not a function"), std::string::npos) << er.reason;

@@ -1,5 +1,5 @@
-// Tip-relief optimisation with the FE model in the loop (issue 15 section 4,
-// lib/optimise/relief.h), on a coarse 3-tooth sector model of the Parker pair (50/50, m 3,
+// Tip-relief optimisation with the FE model in the loop
+// (lib/optimise/relief.h), on a coarse 3-tooth sector model of the Parker pair (50/50, m 3,
 // b 20 mm) at one torque. What each test checks against:
 //  - cycle_measures: a sampled cosine, whose peak-to-peak and first harmonic are known;
 //  - the optimisation: the load-sharing argument (validation/harris_map/README.md): with the
@@ -12,6 +12,7 @@
 //    design evaluated again after others gives the same STE);
 //  - bad settings: InputError naming the entry (the CLI's exit status 2).
 #include "optimise/parameters.h"
+#include "base/units.h"
 #include "optimise/relief_parameters.h"
 
 #include "base/errors.h"
@@ -102,7 +103,7 @@ TEST(ReliefMeasures, SampledCosine)
   const int N = 24;
   std::vector<double> ste(N);
   for (int k = 0; k < N; ++k)
-    ste[k] = 5 + 2 * std::cos(2 * M_PI * k / N + 0.3);
+    ste[k] = 5 + 2 * std::cos(2 * gearfem::units::pi * k / N + 0.3);
   double pp, h1, mean;
   cycle_measures(ste, pp, h1, mean);
   EXPECT_NEAR(h1, 2.0, 1e-12);

@@ -1,5 +1,5 @@
 // params/checked.h: every value that deal.II 9.4's ParameterHandler lets through but cannot
-// convert becomes a named InputError (issue 13).
+// convert becomes a named InputError.
 #include "base/errors.h"
 #include "params/checked.h"
 

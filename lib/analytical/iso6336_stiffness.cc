@@ -1,0 +1,63 @@
+#include "analytical/iso6336_stiffness.h"
+
+#include "base/errors.h"
+#include "base/units.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace gearfem::analytical::iso6336
+{
+  namespace
+  {
+    constexpr double deg = units::deg;
+  } // namespace
+
+  double q_prime(double zn1, double zn2, double x1, double x2)
+  {
+    const double i1 = 1.0 / zn1, i2 = std::isfinite(zn2) ? 1.0 / zn2 : 0.0;
+    return 0.04723 + 0.15551 * i1 + 0.25791 * i2 - 0.00635 * x1 - 0.11654 * x1 * i1 -
+           0.00193 * x2 - 0.24188 * x2 * i2 + 0.00529 * x1 * x1 + 0.00182 * x2 * x2;
+  }
+
+  Stiffness mesh_stiffness(const StiffnessInput &in)
+  {
+    if (in.z1 < 5)
+      throw InputError("Gear 1/Number of teeth", std::to_string(in.z1), ">= 5");
+    if (in.z2 > -5 && in.z2 < 5)
+      throw InputError("Gear 2/Number of teeth", std::to_string(in.z2), ">= 5 (or <= -5 internal)");
+    require_range("Rack/Pressure angle", in.alpha_n / deg, 10.0, 35.0, "deg");
+    require_range("Helix angle", in.beta / deg, 0.0, 45.0, "deg");
+    require_range("Rating/Rim ratio b_s/b", in.rim_ratio, 0.0, 1.0);
+    const double cb3 = std::pow(std::cos(in.beta), 3);
+    const double zn1 = in.z1 / cb3;
+    const double zn2 = in.z2 < 0 ? std::numeric_limits<double>::infinity() : in.z2 / cb3;
+    Stiffness s;
+    s.q_prime = q_prime(zn1, zn2, in.x1, in.x2);
+    s.c_th = 1.0 / s.q_prime;
+    s.C_M = in.C_M;
+    // C_R (ISO 6336-1 eq. 73): 1 for solid gears, else 1 + ln(b_s/b)/(5 exp(s_R/(5 m_n))).
+    s.C_R = 1.0;
+    if (in.rim_ratio < 1.0)
+      {
+        const double bs = std::max(0.2, in.rim_ratio);
+        const double sr = std::max(1.0, in.rim_thickness / in.module);
+        s.C_R = 1.0 + std::log(bs) / (5.0 * std::exp(sr / 5.0));
+      }
+    // C_B (eq. 74), mean of the two basic racks.
+    auto cb = [&](double hfp) {
+      return (1.0 + 0.5 * (1.2 - hfp)) * (1.0 - 0.02 * (20.0 - in.alpha_n / deg));
+    };
+    s.C_B = 0.5 * (cb(in.h_fP1) + cb(in.h_fP2));
+    // Load correction (eq. 70) below F_t K_A/b = 100 N/mm.
+    const double w = in.load_per_width / 1e3; // N/mm
+    s.load_factor = (in.load_per_width > 0.0 && w < 100.0) ? std::pow(w / 100.0, 0.25) : 1.0;
+    s.c_prime = s.c_th * s.C_M * s.C_R * s.C_B * std::cos(in.beta) * s.load_factor;
+    require_greater("contact ratio eps_alpha", in.eps_alpha, 0.0);
+    s.c_gamma_alpha = s.c_prime * (0.75 * in.eps_alpha + 0.25);
+    s.c_gamma_beta = 0.85 * s.c_gamma_alpha;
+    return s;
+  }
+} // namespace gearfem::analytical::iso6336

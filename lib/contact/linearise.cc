@@ -1,0 +1,208 @@
+// TwoBodyContact: the linearised contact problem g = g_hat + a q + W lambda on the current
+// candidates (Delassus operator from the flexibility cache), and the solution record.
+#include "contact/two_body.h"
+
+#include "base/errors.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace gearfem::contact
+{
+  namespace
+  {
+    Vec2 rotate(const Vec2 &v, double angle)
+    {
+      const double c = std::cos(angle), s = std::sin(angle);
+      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+    }
+  } // namespace
+
+  TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene, const SearchResult &sr, double q,
+                                                          const std::vector<double> &lambda_node,
+                                                          double &t_compliance)
+  {
+    const auto &cand = sr.cand;
+    const int m      = int(cand.size());
+    const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
+    // Material scale for the penalty: the smaller E.
+    const double E = std::min(s1_->body().material().youngs_modulus, s2_->body().material().youngs_modulus);
+    const auto velocity = [&](const Vec2 &x) {
+      if (drive_.kind == Drive::Kind::translation)
+        return drive_.direction;
+      const Vec2 c = scene.placement[0].centre;
+      return Vec2(-(x.y() - c.y()), x.x() - c.x());
+    };
+    Linearisation L;
+    L.B[0].assign(m, {});
+    L.B[1].assign(m, {});
+    L.a.resize(m), L.ghat.resize(m), L.D.resize(m), L.lambda0.resize(m);
+    std::vector<int> used[2];
+    // Adds the gap of one slave point (its own nodal weights `slave_shape` on the slave face,
+    // or the node itself) with weight `coef` to row k: the slave and master force
+    // directions, and the arm dg/dq. Body 1 is the driven body, slave or master; its share
+    // of the force acts at its nodes (weights N_j), so the arm is the nodal one: then
+    // -a^T lambda is exactly the moment of the nodal forces about O1.
+    const auto add_point = [&](int k, int S, const GapPoint &gp, const std::vector<int> &slave_nodes,
+                               const std::vector<double> &slave_shape, double coef) {
+      const int M      = 3 - S;
+      const auto &ss   = surface(S);
+      const auto &ms   = surface(M);
+      const Vec2 nS    = rotate(gp.n_pair, -P[S - 1].angle);
+      const Vec2 nM    = gp.pr.normal;
+      const auto &cS   = cache_[S - 1];
+      const auto &cM   = cache_[M - 1];
+      for (std::size_t l = 0; l < slave_nodes.size(); ++l)
+        {
+          const auto &sn = ss.nodes()[slave_nodes[l]];
+          const double v = coef * slave_shape[l];
+          L.B[S - 1][k].push_back({cS.index[sn.dof_x], v * nS.x()});
+          L.B[S - 1][k].push_back({cS.index[sn.dof_y], v * nS.y()});
+          if (S == 1)
+            L.a[k] += v * gp.n_pair.dot(velocity(P[0].apply(sn.x)));
+        }
+      const auto &face = ms.faces()[gp.face];
+      for (std::size_t j = 0; j < face.nodes.size(); ++j)
+        {
+          const auto &mn = ms.nodes()[face.nodes[j]];
+          const double v = coef * gp.shape[j];
+          L.B[M - 1][k].push_back({cM.index[mn.dof_x], -v * nM.x()});
+          L.B[M - 1][k].push_back({cM.index[mn.dof_y], -v * nM.y()});
+          if (M == 1)
+            L.a[k] -= v * gp.n_pair.dot(velocity(P[0].apply(mn.x)));
+        }
+    };
+    for (int k = 0; k < m; ++k)
+      {
+        const auto &c  = cand[k];
+        const int S    = c.S;
+        const auto &nd = surface(S).nodes()[c.node];
+        auto &cS       = cache_[S - 1];
+        L.a[k]         = 0;
+        if (c.terms.empty())
+          add_point(k, S, c.at, {c.node}, {1.0}, 1.0);
+        else
+          for (const auto &[i, coef] : c.terms)
+            {
+              const auto &sm = sr.samples[i];
+              add_point(k, S, sm.gp, surface(S).faces()[sm.slave_face].nodes, sm.slave_shape, coef);
+            }
+        for (int b = 0; b < 2; ++b)
+          {
+            auto &row = L.B[b][k];
+            std::sort(row.begin(), row.end());
+            std::size_t n = 0;
+            for (std::size_t i = 0; i < row.size(); ++i)
+              if (n > 0 && row[n - 1].first == row[i].first)
+                row[n - 1].second += row[i].second;
+              else
+                row[n++] = row[i];
+            row.resize(n);
+          }
+        double btu = 0;
+        for (int b = 0; b < 2; ++b)
+          for (const auto &[i, v] : L.B[b][k])
+            btu += v * cache_[b].u[i];
+        L.ghat[k] = c.g - L.a[k] * q - btu;
+        if (options_.method == Method::penalty)
+          {
+            const double thickness = surface(S).body().material().thickness;
+            L.D[k] = cS.node_h[c.node] / (options_.penalty_factor * E * thickness * nd.weight);
+          }
+        else
+          L.D[k] = 0.0;
+        L.lambda0[k] = lambda_node[key(S, c.node)];
+        for (int b = 0; b < 2; ++b)
+          for (const auto &[i, v] : L.B[b][k])
+            used[b].push_back(i);
+      }
+    for (int b = 0; b < 2; ++b)
+      {
+        std::sort(used[b].begin(), used[b].end());
+        used[b].erase(std::unique(used[b].begin(), used[b].end()), used[b].end());
+      }
+    const double t0 = t_compliance;
+    for (int b = 1; b <= 2; ++b)
+      ensure_columns(b, used[b - 1], t_compliance);
+    L.t_flex = t_compliance - t0;
+
+    // W = sum_b B_b^T C_b B_b. B has 2 (slave) or 2 (p + 1) (master face) entries per
+    // column, so W is built from the columns C_b B_b (contiguous columns of the cache):
+    // O(u m) instead of the O(u^2 m) of a dense product. Symmetrised (C is symmetric to
+    // round-off).
+    L.W = Eigen::MatrixXd::Zero(m, m);
+    Eigen::VectorXd t;
+    for (int b = 0; b < 2; ++b)
+      for (int k = 0; k < m; ++k)
+        {
+          if (L.B[b][k].empty())
+            continue;
+          t.setZero(cache_[b].C.rows());
+          for (const auto &[i, v] : L.B[b][k])
+            t.noalias() += v * cache_[b].C.col(i);
+          for (int l = 0; l < m; ++l)
+            for (const auto &[j, w] : L.B[b][l])
+              L.W(l, k) += w * t[j];
+        }
+    L.W = 0.5 * (L.W + L.W.transpose()).eval();
+    return L;
+  }
+
+  void TwoBodyContact::fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
+                                     const Linearisation &lin, const Eigen::VectorXd &lambda,
+                                     const Eigen::VectorXd &gap, const Scene &scene, double q) const
+  {
+    const int m = int(cand.size());
+    // Pressure recovered on each slave surface from its own nodal forces.
+    std::vector<double> node_force[2] = {std::vector<double>(s1_->nodes().size(), 0.0),
+                                         std::vector<double>(s2_->nodes().size(), 0.0)};
+    for (int k = 0; k < m; ++k)
+      node_force[cand[k].S - 1][cand[k].node] = lambda[k];
+    std::vector<double> node_p[2];
+    for (int b = 0; b < 2; ++b)
+      node_p[b] = surface(b + 1).recover_pressure(node_force[b], surface(b + 1).body().material().thickness);
+    out.max_penetration = 0;
+    for (int k = 0; k < m; ++k)
+      {
+        const auto &c  = cand[k];
+        const int M    = 3 - c.S;
+        const auto &nd = surface(c.S).nodes()[c.node];
+        const auto &mp = surface(M).body().mesh().pieces[c.at.pr.piece];
+        ContactPoint p;
+        p.slave_body    = c.S;
+        p.node          = c.node;
+        p.slave_tooth   = nd.tooth;
+        p.master_piece  = c.at.pr.piece;
+        p.master_tooth  = mp.tooth;
+        p.master_t      = c.at.pr.t;
+        p.slave_code    = mesh::boundary::code_of(nd.boundary_id);
+        p.master_code   = mesh::boundary::code_of(mp.boundary_id);
+        p.master_corner = c.at.pr.corner;
+        p.master_point  = placed(scene, M, q).apply(c.at.pr.point);
+        p.x             = placed(scene, c.S, q).apply(nd.x);
+        p.normal        = c.at.n_pair;
+        p.gap           = gap[k];
+        p.force         = lambda[k];
+        p.weight        = nd.weight;
+        p.pressure      = node_p[c.S - 1][c.node];
+        p.arm           = lin.a[k];
+        out.max_penetration = std::max(out.max_penetration, -p.gap);
+        out.points.push_back(p);
+      }
+    for (int b = 0; b < 2; ++b)
+      {
+        std::vector<double> f(cache_[b].dofs.size(), 0.0);
+        for (int k = 0; k < m; ++k)
+          for (const auto &[i, v] : lin.B[b][k])
+            f[i] += lambda[k] * v;
+        for (std::size_t i = 0; i < f.size(); ++i)
+          if (f[i] != 0)
+            out.forces[b].emplace_back(cache_[b].dofs[i], f[i]);
+      }
+  }
+} // namespace gearfem::contact

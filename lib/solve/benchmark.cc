@@ -1,0 +1,89 @@
+// The solve benchmark.
+#include "solve/benchmark.h"
+
+#include "base/errors.h"
+#include "base/memory.h"
+#include "solve/input.h"
+#include "loading/sweep.h"
+#include "post/observers.h"
+#include "post/parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <iomanip>
+
+namespace gearfem::solve
+{
+  using post::EvaluatingObserver;
+  using post::Evaluator;
+  using post::PositionObserver;
+  using post::PositionResult;
+  using post::PostOptions;
+
+  namespace
+  {
+    /// Sums the per-position figures of a sweep.
+    class Totals : public PositionObserver
+    {
+    public:
+      void finished(const loading::SweepPoint &, const contact::ContactState &s, PositionResult &r) override
+      {
+        ts += s.solution.t_search, tc += s.solution.t_compliance, tl += s.solution.t_solve;
+        tp += r.t_post, tt += s.t_contact + r.t_post;
+        git += s.solution.geometry_iterations, ait += s.solution.active_set_iterations;
+        ste += r.ste;
+      }
+      double ts = 0, tc = 0, tl = 0, tp = 0, tt = 0, ste = 0;
+      long git = 0, ait = 0;
+    };
+  } // namespace
+
+  void benchmark(const std::filesystem::path &prm_file, std::ostream &out)
+  {
+    if (!std::filesystem::is_regular_file(prm_file))
+      throw InputError("input file", prm_file.string(), "an existing readable file");
+    dealii::ParameterHandler prm;
+    solve::declare_gear_contact_input(prm);
+    post::declare_post_parameters(prm);
+    prm.parse_input(prm_file.string(), "", true, true); // other commands' sections are ignored
+    solve::GearContactInput in = solve::parse_gear_contact_input(prm);
+    const PostOptions post_options = post::parse_post_parameters(prm);
+    const auto positions = in.positions();
+    const double T       = in.solve.torques.front();
+    out << "solve benchmark: " << prm_file.filename().string() << ", z " << in.pair->gear(1).teeth() << "/"
+        << in.pair->gear(2).teeth() << ", h_contact " << mesh::contact_size(in.mesh[0], in.pair->gear(1).parameters().rack.module) * 1e3 << " mm, Q"
+        << in.fe.degree << ", " << positions.size() << " positions at T1 = " << T << " N m\n\n"
+        << "| method | DoFs | mesh [s] | set-up [s] | search [s/pos] | flexibility [s/pos] | contact solve "
+           "[s/pos] | post [s/pos] | total [s/pos] | sweep [s] | geometry it/pos | active-set it/pos | "
+           "mean STE [um] | peak memory [MB] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const contact::Method m : {contact::Method::lagrange, contact::Method::penalty})
+      {
+        in.contact.method = m;
+        auto model        = in.model();
+        loading::SweepPlan plan;
+        plan.positions = positions;
+        plan.torques   = {T};
+        Evaluator evaluator(*model, post_options);
+        Totals sum;
+        EvaluatingObserver evaluate(evaluator, {&sum});
+        const auto outcome = loading::run_sweep(*model, plan, {&evaluate});
+        if (!outcome.failure.empty())
+          throw SolverError(outcome.failure);
+        const double sweep = contact::section_seconds(model->timer(), "contact") +
+                             contact::section_seconds(evaluator.timer(), "post") +
+                             contact::section_seconds(evaluator.timer(), "output");
+        const double n     = double(positions.size());
+        out << std::fixed << std::setprecision(3) << "| " << contact::to_string(m) << " | " << model->n_dofs()
+            << " | " << model->mesh_seconds() << " | " << model->setup_seconds() << " | " << sum.ts / n << " | "
+            << sum.tc / n << " | " << sum.tl / n << " | " << sum.tp / n << " | " << sum.tt / n << " | "
+            << std::setprecision(2) << sweep << " | " << sum.git / n << " | " << sum.ait / n << " | "
+            << std::setprecision(4) << sum.ste / n * 1e6 << " | " << std::setprecision(0) << peak_memory_mb()
+            << " |" << std::endl;
+      }
+    out << std::defaultfloat
+        << "\nflexibility: block solves for the contact DoFs not yet cached (the first positions pay most);"
+           "\nset-up: meshing, assembly and factorisation of both gears (once per run).\n"
+           "Targets (2-core machine, mesh level with <= 1 % STE error): <= 5 s per position, <= 3 min per "
+           "40-position cycle.\n";
+  }
+} // namespace gearfem::solve

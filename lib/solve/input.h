@@ -1,0 +1,84 @@
+#pragma once
+// The input of `gearfem solve` as one checked value: the `Solve` section (positions,
+// torques, outputs) and GearContactInput, which gathers the geometry, material, mesh,
+// finite-element and contact sections and builds the model. Engineering units at the
+// interface (deg, N m), SI in the structs.
+#include "contact/gear_contact.h"
+#include "contact/two_body.h"
+#include "fem/elastic_body.h"
+#include "geometry/pair.h"
+#include "mesh/gear_mesh.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace gearfem::solve
+{
+  /// The `Solve` section.
+  struct SolveParameters
+  {
+    enum class Positions
+    {
+      cycle, ///< N equally spaced positions over `pitches` angular pitches from `start`
+      named, ///< the named points of the line of action (A, B, C, D, E)
+      list   ///< explicit roll angles
+    };
+    Positions positions = Positions::cycle;
+    int n_positions     = 40;
+    double pitches      = 1.0;
+    /// Start of the cycle [rad]; NaN-free: `start_at_A` takes phi_A.
+    double start       = 0.0;
+    bool start_at_A    = true;
+    std::vector<std::string> names = {"A", "B", "C", "D", "E"};
+    std::vector<double> roll_angles; ///< [rad]
+    std::vector<double> torques = {200.0}; ///< pinion torques [N m], each > 0
+    enum class Vtu
+    {
+      none,
+      named, ///< only the named points B, C, D (and every position of a `named` run)
+      all
+    };
+    Vtu vtu = Vtu::named;
+    double vtu_scale = 1.0; ///< displacement magnification in the VTU files
+    bool plots       = true;
+    /// `Error estimate`: after the sweep, estimate the discretisation error of STE, root
+    /// stress and p_max at sample positions on a model with the fine mesh sizes halved
+    /// (post/error_estimate.h).
+    bool error_estimate = false;
+  };
+
+  /// Everything `gearfem solve` reads, parsed and checked.
+  struct GearContactInput
+  {
+    std::unique_ptr<geometry::GearPair> pair;
+    /// `Contact/Micro-geometry = gap` with a tip relief: the gears without relief, which are
+    /// meshed (null otherwise: `pair` is meshed).
+    std::unique_ptr<geometry::GearPair> unmodified_pair;
+    mesh::GearMeshParameters mesh[2];
+    fem::Elasticity material[2];
+    fem::FeOptions fe;
+    contact::ContactOptions contact;
+    SolveParameters solve;
+    /// The positions of the `Solve` section: (name, roll angle [rad]).
+    std::vector<std::pair<std::string, double>> positions() const;
+    std::unique_ptr<contact::GearContactModel> model() const;
+  };
+  /// The key of the FE model an input builds: equal keys mean the same meshed geometry
+  /// (the outline of each meshed gear, sampled at 1/50 module, its tooth count, face width
+  /// and the centre distance), mesh, material, finite elements and contact options, so that
+  /// one factorised model serves both (a batch shares it). Torques, positions, outputs and a
+  /// tip relief applied as a gap (`Contact/Micro-geometry = gap`) do not enter it.
+  std::string model_key(const GearContactInput &in);
+
+  /// Declare Rack, Gear 1/2, Pair, Material, Mesh, Finite elements, Contact and Solve.
+  void declare_gear_contact_input(dealii::ParameterHandler &prm);
+  GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm);
+  void declare_solve_parameters(dealii::ParameterHandler &prm);
+  SolveParameters parse_solve_parameters(dealii::ParameterHandler &prm);
+} // namespace gearfem::solve

@@ -1,0 +1,64 @@
+#pragma once
+// The `solve` chain as one library call: the loading sweep over the mesh cycle
+// (loading/sweep.h), each finished position turned into rows of the solve-results tables
+// (io/solve_results.h), VTU files of the selected positions, a checkpoint journal after
+// every position, progress with i/N and ETA, and the results written at the end (also
+// after a solver failure, with every finished position). A run that was killed resumes
+// from its journal (`resume`), and the result equals that of an uninterrupted run.
+// Used by `gearfem solve`; callable by a batch driver or an optimiser without CLI code.
+#include "solve/input.h"
+#include "io/solve_results.h"
+#include "post/position.h"
+
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <string>
+
+namespace gearfem::solve
+{
+  /// Name of the checkpoint journal in the output folder; removed when a run completes.
+  inline constexpr const char *journal_file = "solve.journal";
+
+  struct SolveRunOptions
+  {
+    std::filesystem::path output_dir; ///< must exist
+    /// Hash of everything the results depend on (the input file): a journal with another
+    /// key is not resumed.
+    std::string input_hash;
+    std::string input_name; ///< file name, for the results' `input` attribute
+    /// Continue from output_dir/solve.journal if it exists and matches input_hash (else
+    /// InputError); without a journal the run starts from the beginning.
+    bool resume = false;
+    std::ostream *out = nullptr; ///< progress lines; null: silent
+    post::PostOptions post;            ///< thresholds of the evaluation (`Post` section)
+  };
+
+  struct SolveRunResult
+  {
+    io::SolveResults results;         ///< also written to output_dir
+    std::size_t resumed = 0;          ///< positions taken from the journal
+    std::size_t solved  = 0;          ///< positions solved in this call
+    std::string failure;              ///< the SolverError message, empty on success
+    /// Per torque: unresolved loaded Hertzian pairs (below PostOptions::min_patch_nodes,
+    /// share above PostOptions::unresolved_share).
+    std::map<double, int> unresolved;
+    /// Wall time [s] of the phases of this call: "contact" (the solves), "post" (the
+    /// evaluation), "output" (tables, VTU, journal, results files).
+    std::map<std::string, double> seconds;
+  };
+
+  /// The rows of one evaluated position (index = position index in the plan, name = its
+  /// point name or "") in the sweep, pairs and pressure tables.
+  void append_position(io::SolveResults &tables, const contact::ContactState &s, const post::PositionResult &r,
+                       const std::string &name, int index, double z_ratio, double face_width);
+
+  /// Run the sweep of `in` on `model` and write the results (docs/output-format.md).
+  SolveRunResult run_solve(contact::GearContactModel &model, const solve::GearContactInput &in,
+                           const SolveRunOptions &options);
+
+  /// Markdown summary per torque: mean STE, its peak-to-peak, mean k_secant against ISO
+  /// 6336-1 c_gamma_alpha, peak pressure and root stresses, unresolved pair-positions.
+  std::string summary_table(const SolveRunResult &run, const geometry::GearPair &pair,
+                            const std::vector<double> &torques);
+} // namespace gearfem::solve
