@@ -5,22 +5,14 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#if __has_include("analytical/benchmark.h")
-#  include "analytical/benchmark.h"
-#  define GEARFEM_BENCH_ANALYTICAL 1
-#endif
-#if __has_include("dynamics/benchmark.h")
-#  include "dynamics/benchmark.h"
-#  define GEARFEM_BENCH_DYNAMICS 1
-#endif
-#if __has_include("post/benchmark.h")
-#  include "post/benchmark.h"
-#  define GEARFEM_BENCH_SOLVE
-#endif
-#if __has_include("fem/benchmark.h")
-#  include "fem/benchmark.h"
-#  define GEARFEM_BENCH_FEM 1
-#endif
+#include "analytical/benchmark.h"
+#include "dynamics/benchmark.h"
+#include "fem/benchmark.h"
+#include "solve/benchmark.h"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
 
 namespace gearfem::commands
 {
@@ -40,50 +32,36 @@ namespace gearfem::commands
     c.declare     = [](dealii::ParameterHandler &) {};
     c.run         = [](dealii::ParameterHandler &, const RunContext &ctx) {
       const std::string what = ctx.arguments.empty() ? "" : ctx.arguments.front();
-      std::string available;
-#ifdef GEARFEM_BENCH_ANALYTICAL
-      available += " analytical";
+      auto input_file = [&] {
+        if (ctx.input_file.empty())
+          throw InputError("bench " + what + " input file", "(none)", "a .prm file",
+                           "usage: gearfem bench " + what + " inputs/demo.prm");
+        return ctx.input_file;
+      };
       if (what == "analytical")
         {
           if (!ctx.validate_only)
             analytical::benchmark(*ctx.out);
-          return;
         }
-#endif
-#ifdef GEARFEM_BENCH_DYNAMICS
-      available += " dynamics";
-      if (what == "dynamics")
+      else if (what == "dynamics")
         {
           if (!ctx.validate_only)
             dynamics::benchmark(*ctx.out);
-          return;
         }
-#endif
-#ifdef GEARFEM_BENCH_FEM
-      available += " fem";
-      if (what == "fem")
+      else if (what == "fem")
         {
-          if (ctx.input_file.empty())
-            throw InputError("bench fem input file", "(none)", "a .prm file",
-                             "usage: gearfem bench fem inputs/demo.prm");
+          const auto file = input_file();
           if (!ctx.validate_only)
-            fem::benchmark(ctx.input_file, *ctx.out);
-          return;
+            fem::benchmark(file, *ctx.out);
         }
-#endif
-#ifdef GEARFEM_BENCH_SOLVE
-      available += " solve";
-      if (what == "solve")
+      else if (what == "solve")
         {
-          if (ctx.input_file.empty())
-            throw InputError("bench solve input file", "(none)", "a .prm file",
-                             "usage: gearfem bench solve inputs/demo.prm");
+          const auto file = input_file();
           if (!ctx.validate_only)
-            solve::benchmark(ctx.input_file, *ctx.out);
-          return;
+            solve::benchmark(file, *ctx.out);
         }
-#endif
-      throw InputError("bench target", what.empty() ? "(none)" : what, "{" + available + " }");
+      else
+        throw InputError("bench target", what.empty() ? "(none)" : what, "{ analytical dynamics fem solve }");
     };
     return c;
   }

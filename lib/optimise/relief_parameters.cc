@@ -84,7 +84,7 @@ namespace gearfem::optimise
       p.weights     = params::get_doubles(prm, "Torque weights");
       p.grid_points = params::get_integer(prm, "Grid points");
       p.single_torque_optima = params::get_bool(prm, "Single-torque optima");
-      p.check_torques        = params::get_doubles(prm, "Check torques");
+      p.check_torques        = params::get_torques(prm, "Check torques", "Optimise/Tip relief/Check torques", true);
       prm.leave_subsection();
       prm.leave_subsection();
     }

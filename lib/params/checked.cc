@@ -207,4 +207,22 @@ namespace gearfem::params
       t.erase(t.begin());
     return t;
   }
+
+  std::vector<double> get_torques(const dealii::ParameterHandler &prm, const std::string &entry,
+                                  const std::string &path, bool allow_empty)
+  {
+    const std::vector<double> t = parse_double_list(path, prm.get(entry));
+    if (t.empty() && !allow_empty)
+      throw InputError(path, "(empty)", "one or more torques > 0 N m");
+    for (const double T : t)
+      require_greater(path, T, 0.0, "N m");
+    return t;
+  }
+
+  void declare_torques(dealii::ParameterHandler &prm, const std::string &entry, const std::string &default_value,
+                       const std::string &what)
+  {
+    prm.declare_entry(entry, default_value, dealii::Patterns::Anything(),
+                      what + " Comma-separated. Units: N m. Allowed: > 0 each.");
+  }
 } // namespace gearfem::params

@@ -38,6 +38,15 @@ namespace gearfem::params
   /// A comma-separated list of doubles (empty items skipped), each checked as get_double.
   std::vector<double> get_doubles(const dealii::ParameterHandler &prm, const std::string &entry);
 
+  /// The one form of a torque list: a comma-separated list of pinion torques [N m], each
+  /// finite and > 0; `path` ("Solve/Torques") names the entry in errors. Empty is an error
+  /// unless `allow_empty`. Declare such entries with declare_torques (Anything pattern: the
+  /// check is here, with the allowed range in the message).
+  std::vector<double> get_torques(const dealii::ParameterHandler &prm, const std::string &entry,
+                                  const std::string &path, bool allow_empty = false);
+  void declare_torques(dealii::ParameterHandler &prm, const std::string &entry, const std::string &default_value,
+                       const std::string &what);
+
   /// Check every entry of `prm` (all subsections) against its declared pattern, strictly:
   /// Double and Integer values (also as List, Map and Tuple items) must convert with
   /// base/number.h, every other pattern must match (this catches the values with '{' that

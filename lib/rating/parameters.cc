@@ -16,8 +16,7 @@ namespace gearfem::rating
   void declare_rating_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Rating");
-    prm.declare_entry("Pinion torques", "500, 400, 300, 200", List(Double(0)),
-                      "Pinion torques to rate, one report column each. Units: N m. Allowed: > 0.");
+    params::declare_torques(prm, "Pinion torques", "500, 400, 300, 200", "Pinion torques to rate, one report column each.");
     prm.declare_entry("Pinion speed", "0", Double(0),
                       "Pinion speed, for the pitch-line velocity only (the dynamic factors are "
                       "inputs). Units: rpm.");
@@ -57,7 +56,7 @@ namespace gearfem::rating
   {
     RatingInput in;
     prm.enter_subsection("Rating");
-    in.torques = params::get_doubles(prm, "Pinion torques");
+    in.torques = params::get_torques(prm, "Pinion torques", "Rating/Pinion torques");
     in.speed = params::get_double(prm, "Pinion speed");
     in.K_o = params::get_double(prm, "AGMA overload factor");
     in.K_v = params::get_double(prm, "AGMA dynamic factor");
@@ -75,10 +74,6 @@ namespace gearfem::rating
     in.case_hardened = params::get_bool(prm, "Case hardened");
     in.sigma_Hlim = params::get_double(prm, "Contact fatigue limit") * 1e6;
     prm.leave_subsection();
-    if (in.torques.empty())
-      throw InputError("Rating/Pinion torques", "(empty)", "one or more values > 0 N m");
-    for (double T : in.torques)
-      require_greater("Rating/Pinion torques", T, 0.0, "N m");
     for (auto f : {std::pair<const char *, double>{"AGMA overload factor", in.K_o},
                    {"AGMA dynamic factor", in.K_v}, {"AGMA size factor", in.K_s},
                    {"AGMA surface condition factor", in.Z_R}, {"AGMA rim thickness factor", in.K_B},

@@ -48,8 +48,7 @@ namespace gearfem::solve
     prm.declare_entry("Roll angles", "", Anything(),
                       "Comma-separated pinion roll angles for `list`. Units: deg (0 at C). Allowed: -360 "
                       "to 360 each.");
-    prm.declare_entry("Torques", "200", Anything(),
-                      "Comma-separated pinion torques, one sweep each. Units: N m. Allowed: > 0.");
+    params::declare_torques(prm, "Torques", "200", "Pinion torques, one sweep each.");
     prm.declare_entry("VTU", "named", Selection("none|named|all"),
                       "Deformed-pair VTU files: none, at B/C/D (named), or every position. Units: none.");
     prm.declare_entry("VTU displacement scale", "1", Double(),
@@ -88,7 +87,7 @@ namespace gearfem::solve
     p.names = dealii::Utilities::split_string_list(prm.get("Named positions"), ',');
     for (const double a : doubles("Solve/Roll angles", prm.get("Roll angles")))
       p.roll_angles.push_back(a * units::deg);
-    p.torques = doubles("Solve/Torques", prm.get("Torques"));
+    p.torques = params::get_torques(prm, "Torques", "Solve/Torques");
     const std::string vtu = prm.get("VTU");
     p.vtu       = vtu == "none" ? SolveParameters::Vtu::none :
                   vtu == "all" ? SolveParameters::Vtu::all : SolveParameters::Vtu::named;
@@ -111,11 +110,6 @@ namespace gearfem::solve
       throw InputError("Solve/Roll angles", "(empty)", "at least one roll angle when Positions = list");
     if (p.positions == SolveParameters::Positions::named && p.names.empty())
       throw InputError("Solve/Named positions", "(empty)", "at least one of A, B, C, D, E");
-    if (p.torques.empty())
-      throw InputError("Solve/Torques", "(empty)", "at least one torque > 0 N m");
-    for (const double t : p.torques)
-      if (!(t > 0))
-        throw InputError("Solve/Torques", to_string_g(t), "> 0 N m");
     require_greater("Solve/VTU displacement scale", p.vtu_scale, 0.0, "-");
     return p;
   }

@@ -308,6 +308,15 @@ PY
     grep -q '"Pressure angle"' "$work/o" || fail "--print-parameters json"
     "$gearfem" nosuchcommand x.prm > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown command not exit 2"
     "$gearfem" profile "$work/missing.prm" > /dev/null 2>&1; [ $? -eq 2 ] || fail "missing file not exit 2"
+    # Every benchmark target of `gearfem bench --help` is recognised (checked, not run).
+    for t in analytical dynamics; do
+      "$gearfem" bench "$t" --validate > "$work/o" 2>&1 || { cat "$work/o"; fail "bench $t not recognised"; }
+    done
+    for t in fem solve; do
+      "$gearfem" bench "$t" "$arg/inputs/demo.prm" --validate > "$work/o" 2>&1 ||
+        { cat "$work/o"; fail "bench $t not recognised"; }
+    done
+    "$gearfem" bench nosuch --validate > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown bench target not exit 2"
     ;;
   *) fail "unknown mode $mode" ;;
 esac

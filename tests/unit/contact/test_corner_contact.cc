@@ -10,6 +10,7 @@
 // (`Slave selection = fixed`) must fail the slave swap here, or the test could not see
 // the defect it guards against.
 #include "contact/gear_contact.h"
+#include "common/fixtures.h"
 #include "base/units.h"
 #include "solve/input.h"
 #include "post/position.h"
@@ -36,22 +37,7 @@ namespace
 
   std::string prm_text(int slave, const std::string &selection)
   {
-    return R"(
-subsection Rack
-  set Module = 3
-  set Pressure angle = 20
-end
-subsection Gear 1
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Gear 2
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Pair
-  set Centre distance = 150
-end
+    return gearfem::test::parker_pair(R"(
 subsection Mesh
   set Model = sector
   set Sector teeth = 3
@@ -64,7 +50,7 @@ subsection Contact
   set Slave body = )" + std::to_string(slave) + R"(
   set Slave selection = )" + selection + R"(
 end
-)";
+)");
   }
 
   struct PairRun

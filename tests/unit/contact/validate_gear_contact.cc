@@ -8,6 +8,7 @@
 //     against plane Hertz and the thesis FEM (../shared/reference/SEEDS.md);
 //  5. pinion root stress at HPSTC against ISO 6336-3 method B (sigma_F0).
 #include "analytical/from_geometry.h"
+#include "common/fixtures.h"
 #include "base/units.h"
 #include "rating/iso6336.h"
 #include "solve/input.h"
@@ -42,23 +43,8 @@ namespace
     return r;
   }
 
-  const char *demo = R"(
-subsection Rack
-  set Module = 3
-  set Pressure angle = 20
-end
-subsection Gear 1
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Gear 2
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Pair
-  set Centre distance = 150
-end
-)";
+  const std::string demo = gearfem::test::parker_pair(R"(
+)");
   const char *seed001 = R"(
 subsection Rack
   set Module = 4

@@ -12,6 +12,7 @@
 //    design evaluated again after others gives the same STE);
 //  - bad settings: InputError naming the entry (the CLI's exit status 2).
 #include "optimise/parameters.h"
+#include "common/fixtures.h"
 #include "base/units.h"
 #include "optimise/relief_parameters.h"
 
@@ -30,7 +31,7 @@ using namespace gearfem::optimise;
 
 namespace
 {
-  const char *base_case = R"(
+  const std::string base_case = R"(
 subsection Optimise
   set Problem = tip relief
   subsection Tip relief
@@ -45,22 +46,7 @@ subsection Optimiser
   set Methods         = cobyla
   set Max evaluations = 8
 end
-subsection Rack
-  set Module = 3
-  set Pressure angle = 20
-end
-subsection Gear 1
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Gear 2
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Pair
-  set Centre distance = 150
-end
-subsection Mesh
+)" + gearfem::test::fixture("parker_pair.prm") + R"(subsection Mesh
   set Model = sector
   set Sector teeth = 3
   set h_contact = 0.25

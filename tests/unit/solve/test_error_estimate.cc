@@ -11,6 +11,7 @@
 //   solver tolerance whatever the warm start;
 // - the algebra of Richardson extrapolation: error = (Q_{h/2} - Q_h) 4/3 for r = 2, p = 2.
 #include "contact/gear_contact.h"
+#include "common/fixtures.h"
 #include "base/units.h"
 #include "solve/input.h"
 #include "solve/error_estimate.h"
@@ -30,22 +31,7 @@ namespace
 {
   solve::GearContactInput parse_case()
   {
-    const std::string text = R"(
-subsection Rack
-  set Module = 3
-  set Pressure angle = 20
-end
-subsection Gear 1
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Gear 2
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Pair
-  set Centre distance = 150
-end
+    const std::string text = gearfem::test::parker_pair(R"(
 subsection Mesh
   set Model = sector
   set Sector teeth = 3
@@ -57,7 +43,7 @@ subsection Solve
   set Torques = 200
   set Error estimate = true
 end
-)";
+)");
     dealii::ParameterHandler prm;
     solve::declare_gear_contact_input(prm);
     prm.parse_input_from_string(text);
