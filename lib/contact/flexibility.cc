@@ -26,19 +26,20 @@ namespace gearfem::contact
 
   std::size_t TwoBodyContact::cached_columns(int body) const
   {
-    const auto &h = cache_[body - 1].have;
+    const auto &h = cache_[body - 1].flex->have;
     return std::size_t(std::count(h.begin(), h.end(), 1));
   }
 
   void TwoBodyContact::ensure_columns(int body, const std::vector<int> &idx, double &seconds)
   {
     auto &c = cache_[body - 1];
+    auto &F = *c.flex;
     std::vector<int> missing;
     for (const int i : idx)
-      if (!c.have[i])
+      if (!F.have[i])
         {
           missing.push_back(i);
-          c.have[i] = 2; // queued
+          F.have[i] = 2; // queued
         }
     if (missing.empty())
       return;
@@ -51,8 +52,8 @@ namespace gearfem::contact
     for (std::size_t j = 0; j < missing.size(); ++j)
       {
         for (std::size_t i = 0; i < n; ++i)
-          c.C(i, missing[j]) = X[j * n + i];
-        c.have[missing[j]] = 1;
+          F.C(i, missing[j]) = X[j * n + i];
+        F.have[missing[j]] = 1;
       }
     seconds += since(t0);
   }

@@ -43,7 +43,8 @@ namespace gearfem::contact
   /// element size of its flanks.
   struct GearBody
   {
-    std::unique_ptr<fem::ElasticBody> body;
+    /// Shared: the two gears of a pair whose bodies are identical use one factorised body.
+    std::shared_ptr<fem::ElasticBody> body;
     std::vector<int> fine_teeth; ///< body-frame tooth indices
     double contact_size = 0;     ///< element size on the drive flanks after refinement [m]
   };
@@ -51,6 +52,12 @@ namespace gearfem::contact
   /// entry): a sector has at least 3 teeth, so that teeth -1, 0 and 1 share the mesh cycle.
   /// Checked when the input is parsed (solve/input.h) and again before a body is meshed.
   void check_contact_mesh(const mesh::GearMeshParameters &mesh);
+
+  /// True when gears 1 and 2 of `pair` have the same body: the same generated outline (tooth
+  /// count, face width and every outline point), the same mesh parameters and the same
+  /// material. Such a pair (a 1:1 pair of identical gears) is meshed and factorised once.
+  bool identical_bodies(const geometry::GearPair &pair, const mesh::GearMeshParameters mesh[2],
+                        const fem::Elasticity material[2]);
 
   /// Mesh gear i (1 or 2) of `pair`, build, constrain, assemble and factorise its body.
   /// With a timer, the phases are its sections "mesh" and "assemble and factorise".
@@ -136,7 +143,7 @@ namespace gearfem::contact
     /// The tip reliefs of pair_ as gap modifications (micro_geometry_as_gap), else none.
     void apply_micro_geometry();
     const geometry::GearPair *pair_;
-    std::unique_ptr<fem::ElasticBody> bodies_[2];
+    std::shared_ptr<fem::ElasticBody> bodies_[2]; ///< the same body twice for identical gears
     std::unique_ptr<ContactSurface> surfaces_[2];
     std::unique_ptr<TwoBodyContact> solver_;
     std::vector<int> fine_[2];

@@ -142,9 +142,9 @@ namespace gearfem::contact
         {
           if (L.B[b][k].empty())
             continue;
-          t.setZero(cache_[b].C.rows());
+          t.setZero(cache_[b].flex->C.rows());
           for (const auto &[i, v] : L.B[b][k])
-            t.noalias() += v * cache_[b].C.col(i);
+            t.noalias() += v * cache_[b].flex->C.col(i);
           for (int l = 0; l < m; ++l)
             for (const auto &[j, w] : L.B[b][l])
               L.W(l, k) += w * t[j];

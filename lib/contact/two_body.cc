@@ -80,10 +80,15 @@ namespace gearfem::contact
               if (nv.dot(normals.front()) < std::cos(1e-3))
                 c.kink[n] = 1;
           }
-        c.C = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
-        c.have.assign(c.dofs.size(), 0);
+        c.flex    = std::make_shared<Flexibility>();
+        c.flex->C = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
+        c.flex->have.assign(c.dofs.size(), 0);
         c.u = Eigen::VectorXd::Zero(c.dofs.size());
       }
+    // The same factorised body with the same surface on both sides (identical gears): the
+    // flexibility columns are the same numbers, so both sides share them.
+    if (&s1.body() == &s2.body() && cache_[0].dofs == cache_[1].dofs)
+      cache_[1].flex = cache_[0].flex;
   }
 
   ContactSolution TwoBodyContact::solve(const Scene &scene, Control control, double value,
@@ -158,7 +163,7 @@ namespace gearfem::contact
               idx.push_back(c.index[d]);
             ensure_columns(b, idx, out.t_compliance);
             for (const auto &[d, f] : warm->forces[b - 1])
-              c.u += (f * scale) * c.C.col(c.index[d]);
+              c.u += (f * scale) * c.flex->C.col(c.index[d]);
           }
       }
 
@@ -209,7 +214,7 @@ namespace gearfem::contact
             for (int k = 0; k < m; ++k)
               if (ncp.lambda[k] != 0)
                 for (const auto &[i, v] : lin.B[b][k])
-                  c.u += (ncp.lambda[k] * v) * c.C.col(i);
+                  c.u += (ncp.lambda[k] * v) * c.flex->C.col(i);
           }
         std::vector<int> active;
         std::vector<double> lambda_new(lambda_node.size(), 0.0);

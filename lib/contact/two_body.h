@@ -189,12 +189,19 @@ namespace gearfem::contact
       Eigen::MatrixXd W;
       double t_flex = 0; ///< flexibility columns computed for it [s]
     };
+    struct Flexibility
+    {
+      Eigen::MatrixXd C;      ///< columns of K^-1 on the surface DoFs [m/N]
+      std::vector<char> have; ///< column computed (1), queued (2)
+    };
     struct BodyCache
     {
       std::vector<unsigned int> dofs;             ///< universe: the surface DoFs
       std::vector<int> index;                     ///< global DoF -> universe index (-1)
-      Eigen::MatrixXd C;                          ///< flexibility on the universe [m/N]
-      std::vector<char> have;                     ///< column computed
+      /// The flexibility on the universe [m/N] and which columns are computed; one object
+      /// for both bodies when they are the same factorised body with the same surface
+      /// (identical gears), so each column is solved once.
+      std::shared_ptr<Flexibility> flex;
       Eigen::VectorXd u;                          ///< current elastic displacement on the universe
       std::vector<double> node_h;                 ///< longest face chord at each surface node [m]
       std::vector<std::vector<int>> node_faces;   ///< surface faces around each node

@@ -3,6 +3,7 @@
 // tangent against a finite difference, rotation control against torque control, load
 // sharing at named points, bad input.
 #include "base/errors.h"
+#include "common/fixtures.h"
 #include "base/units.h"
 #include "contact/gear_contact.h"
 #include "solve/input.h"
@@ -24,28 +25,13 @@ using gearfem::solve::parse_gear_contact_input;
 
 namespace
 {
-  const char *demo_prm = R"(
-subsection Rack
-  set Module = 3
-  set Pressure angle = 20
-end
-subsection Gear 1
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Gear 2
-  set Number of teeth = 50
-  set Face width = 20
-end
-subsection Pair
-  set Centre distance = 150
-end
+  const std::string demo_prm = gearfem::test::parker_pair(R"(
 subsection Mesh
   set h_contact = 0.5
   set h_fillet = 0.5
   set h_body = 5
 end
-)";
+)");
 
   /// The coarse demo pair through the same parsing as `gearfem solve`.
   struct Setup
@@ -170,11 +156,25 @@ TEST(GearContact, PenaltyAgreesWithLagrange)
 TEST(GearContact, BuiltFromTwoPreparedBodies)
 {
   // The model of two bodies built separately (as an optimiser that changes one gear would)
-  // is the model of the mesh parameters: the same state to the last bit.
+  // is the model of the mesh parameters: the same state to the last bit. The demo pair is a
+  // 1:1 pair of identical gears, so the model of the mesh parameters meshes and factorises
+  // one body and uses it for both gears; the independently meshed second body is the
+  // reference that this sharing changes nothing.
   const auto &in = setup().in;
+  EXPECT_TRUE(identical_bodies(*in.pair, in.mesh, in.material));
+  EXPECT_EQ(&lagrange().body(1), &lagrange().body(2));
+  {
+    mesh::GearMeshParameters other[2] = {in.mesh[0], in.mesh[1]};
+    other[1].h_body *= 0.9;
+    EXPECT_FALSE(identical_bodies(*in.pair, other, in.material));
+    fem::Elasticity softer[2] = {in.material[0], in.material[1]};
+    softer[1].youngs_modulus *= 0.5;
+    EXPECT_FALSE(identical_bodies(*in.pair, in.mesh, softer));
+  }
   std::array<GearBody, 2> bodies = {build_gear_body(*in.pair, 1, in.mesh[0], in.material[0], in.fe),
                                     build_gear_body(*in.pair, 2, in.mesh[1], in.material[1], in.fe)};
   GearContactModel m(*in.pair, std::move(bodies), ContactOptions());
+  EXPECT_NE(&m.body(1), &m.body(2));
   EXPECT_EQ(m.n_dofs(), lagrange().n_dofs());
   const double phi = 0.3 * (2 * gearfem::units::pi / 50);
   const auto a = m.solve(phi, 200.0), b = lagrange().solve(phi, 200.0);
