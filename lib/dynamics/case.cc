@@ -47,10 +47,18 @@ namespace gearfem::dynamics
   {
     integrator.check();
     response.check();
-    if (!(zeta >= 0))
-      throw InputError("Dynamics/Operating/Damping ratio", to_string_g(zeta), ">= 0");
-    if (!(ks_zeta >= 0))
-      throw InputError("Dynamics/Kahraman-Singh/Damping ratio", to_string_g(ks_zeta), ">= 0");
+    // A speed sweep starts each speed from the previous one's state and records a steady
+    // state: without damping the free vibration is carried from speed to speed and never
+    // decays (near the parametric resonance it grows without bound), so a sweep needs
+    // zeta > 0; a single time response may be undamped.
+    const bool ks            = model == ModelKind::kahraman_singh;
+    const double z           = ks ? ks_zeta : zeta;
+    const std::string z_name = ks ? "Dynamics/Kahraman-Singh/Damping ratio" : "Dynamics/Operating/Damping ratio";
+    if (!(z >= 0 && z <= 1))
+      throw InputError(z_name, to_string_g(z), "[0, 1]");
+    if (run_sweep && !(z > 0))
+      throw InputError(z_name, to_string_g(z), "> 0 with a speed sweep (Dynamics/Analysis = sweep or both)",
+                       "an undamped sweep carries free vibration from speed to speed and never settles");
     if (run_sweep && !(sweep_min < sweep_max))
       {
         // Report in the units of the input: rpm, or Omega [-] in the Kahraman-Singh mode.

@@ -68,10 +68,16 @@ namespace gearfem::dynamics
     require_greater("Dynamics/Integrator/Time step", step, 0.0);
     if (method == Method::dopri5 && adaptive)
       {
-        require_greater("Dynamics/Integrator/Relative tolerance", rtol, 0.0);
-        require_greater("Dynamics/Integrator/Absolute tolerance", atol, 0.0);
+        // Below 1e-14 the error estimate is round-off; above 1e-2 (relative) or 1e-3 (absolute,
+        // in state units: the deflections are micrometres) the steps grow until the contact
+        // events chatter and the run no longer represents the mesh.
+        require_range("Dynamics/Integrator/Relative tolerance", rtol, 1e-14, 1e-2);
+        if (!(atol > 0 && atol <= max_absolute_tolerance))
+          throw InputError("Dynamics/Integrator/Absolute tolerance", to_string_g(atol),
+                           "(0, " + to_string_g(max_absolute_tolerance) + "]");
       }
-    require_greater("Dynamics/Integrator/Event tolerance", event_tolerance, 0.0);
+    if (!(event_tolerance > 0 && event_tolerance <= 1e-3))
+      throw InputError("Dynamics/Integrator/Event tolerance", to_string_g(event_tolerance), "(0, 0.001]");
     if (max_step < 0)
       throw InputError("Dynamics/Integrator/Maximum step", to_string_g(max_step), ">= 0 (0: none)");
   }
@@ -222,8 +228,20 @@ namespace gearfem::dynamics
     const bool fixed = !(opt_.method == Method::dopri5 && opt_.adaptive);
     State x_new(x.size()), x_mid(x.size());
     int guard = 0;
+    long steps = 0, stalled = 0;
+    const double t_start = t, tiny = 1e-8 * (t_end - t);
+    auto stop = [&](const std::string &why) {
+      throw SolverError(why + " between t = " + to_string_g(t_start) + " and the output time " + to_string_g(t_end) +
+                        " (now at t = " + to_string_g(t) + "; contact events chattering or a vanishing step: "
+                        "tighten Integrator/Relative and Absolute tolerance, or raise Steps per period)");
+    };
     while (t_end - t > 1e-14 * std::max(1.0, std::abs(t_end)))
       {
+        if (++steps > max_steps_per_advance)
+          stop("more than " + std::to_string(max_steps_per_advance) + " integration steps");
+        if (stalled > max_stalled_steps)
+          stop(std::to_string(max_stalled_steps) + " consecutive steps each shorter than 1e-8 of the interval");
+        const double t_before = t;
         double h = fixed ? opt_.step : h_;
         const bool last = h >= t_end - t;
         if (last)
@@ -300,6 +318,7 @@ namespace gearfem::dynamics
           t = last ? t_end : t + h;
         x = x_new;
         ++stats_.accepted;
+        stalled = t - t_before < tiny ? stalled + 1 : 0;
         if (!fixed)
           h_ = last ? std::max(h_, h_next) : h_next;
         if (tau_event >= 0)

@@ -57,9 +57,17 @@ namespace gearfem::dynamics
     double max_step = 0.0;       ///< upper bound of the adaptive step (0: none)
     double event_tolerance = 1e-12; ///< bracket width of located events [time unit]
     bool locate_events = true;   ///< false: let the mode switch at step ends (chatters)
-    /// Throws InputError (names "Integrator/...") for step, tolerances <= 0.
+    /// Throws InputError (names "Integrator/...") for step <= 0 and tolerances out of range:
+    /// rtol in [1e-14, 1e-2], atol in (0, max_absolute_tolerance], event tolerance in (0, 1e-3].
     void check() const;
   };
+  inline constexpr double max_absolute_tolerance = 1e-3;
+  /// The caps of Integrator::advance, beyond which a call ends with a named SolverError
+  /// instead of running on: the steps (accepted, rejected and event steps) of one call, and
+  /// the consecutive accepted steps that each advance less than 1e-8 of the call's interval
+  /// (events piling up: a Zeno-like chatter).
+  inline constexpr long max_steps_per_advance = 100000000;
+  inline constexpr long max_stalled_steps     = 100000;
 
   /// A located mode change.
   struct Event

@@ -151,7 +151,9 @@ namespace gearfem::dynamics
     prm.declare_entry("Pinion speed", "1528", Double(0), "Units: rpm.");
     prm.declare_entry("Torque ramp time", "0", Double(0), "Linear start-up ramp. Units: ms.");
     prm.declare_entry("Speed source", "false", Bool(), "Impose the pinion speed (2-DOF model) [-].");
-    prm.declare_entry("Damping ratio", "0.02", Double(), "zeta: c = 2 zeta sqrt(kbar m_eq) [-].");
+    prm.declare_entry("Damping ratio", "0.02", Double(),
+                      "zeta: c = 2 zeta sqrt(kbar m_eq) [-]. Allowed: 0 to 1; > 0 with a speed sweep (an "
+                      "undamped sweep never settles).");
     prm.declare_entry("Damping only in contact", "false", Bool(), "[-]");
     prm.declare_entry("Tooth mass", "false", Bool(), "Add the equivalent tooth inertia (the NTUA tooth-mass thesis) [-].");
     prm.declare_entry("Tooth mass weighting", "linear", Selection("linear|quadratic"),
@@ -161,7 +163,8 @@ namespace gearfem::dynamics
     prm.leave_subsection();
 
     prm.enter_subsection("Kahraman-Singh");
-    prm.declare_entry("Damping ratio", "0.05", Double(), "zeta [-].");
+    prm.declare_entry("Damping ratio", "0.05", Double(),
+                      "zeta [-]. Allowed: 0 to 1; > 0 with a speed sweep (an undamped sweep never settles).");
     prm.declare_entry("Mean force", "0.1", Double(0), "F_m [-].");
     prm.declare_entry("Cosine coefficients", "-0.2, -0.1, -0.05", List(Double()), "k(t) = 1 + sum a_n cos(n W t) [-].");
     prm.declare_entry("Frequency", "0.9", Double(0), "Omega of the time response [-].");
@@ -170,11 +173,13 @@ namespace gearfem::dynamics
     prm.enter_subsection("Integrator");
     prm.declare_entry("Method", "RK4", Selection("RK4|DOPRI5|SDIRK3"), "Stepper.");
     prm.declare_entry("Steps per period", "128", Integer(), "Fixed-step methods: steps per mesh period [-].");
-    prm.declare_entry("Relative tolerance", "1e-8", Double(), "DOPRI5 [-].");
+    prm.declare_entry("Relative tolerance", "1e-8", Double(), "DOPRI5 [-]. Allowed: 1e-14 to 1e-2.");
     prm.declare_entry("Absolute tolerance", "1e-14", Double(),
-                      "DOPRI5; state units (m, m/s, rad; dimensionless in Kahraman-Singh mode).");
+                      "DOPRI5; state units (m, m/s, rad; dimensionless in Kahraman-Singh mode). Allowed: > 0 "
+                      "and <= 1e-3 (looser steps let the contact events chatter).");
     prm.declare_entry("Event location", "true", Bool(), "Locate contact and stiffness events [-].");
-    prm.declare_entry("Event tolerance", "1e-12", Double(), "Units: s (dimensionless in KS mode).");
+    prm.declare_entry("Event tolerance", "1e-12", Double(),
+                      "Units: s (dimensionless in KS mode). Allowed: > 0 and <= 1e-3.");
     prm.leave_subsection();
 
     prm.enter_subsection("Analysis");

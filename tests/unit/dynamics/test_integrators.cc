@@ -199,3 +199,70 @@ TEST(Integrators, BadInput)
     }
   EXPECT_THROW(method_from_string("Euler"), gearfem::InputError);
 }
+
+// The tolerances are bounded where the numerics need it: a loose absolute tolerance lets
+// the steps grow until contact events chatter (a run that never ends), so 1e20 is refused.
+TEST(Integrators, ToleranceBounds)
+{
+  IntegratorOptions o;
+  o.atol = 1e20;
+  EXPECT_THROW(Integrator{o}, gearfem::InputError);
+  o.atol = gearfem::dynamics::max_absolute_tolerance;
+  EXPECT_NO_THROW(Integrator{o});
+  o.rtol = 0.5;
+  EXPECT_THROW(Integrator{o}, gearfem::InputError);
+  o.rtol = 1e-8;
+  o.event_tolerance = 1.0;
+  EXPECT_THROW(Integrator{o}, gearfem::InputError);
+}
+
+namespace
+{
+  /// A mode that switches 1e-9 time units after each switch (a Zeno-like chatter, as contact
+  /// events under a far too loose tolerance): every step ends at the next event, so reaching
+  /// t = 1 would take 1e9 steps.
+  class Chatter : public Oscillator
+  {
+  public:
+    int n_switches() const override { return 1; }
+    void switching_functions(double t, const State &, double *g) const override
+    {
+      g[0] = mode_ * (last_ + 1e-9 - t);
+    }
+    bool update_mode(double t, const State &) override
+    {
+      if (t < last_ + 0.5e-9)
+        return false;
+      last_ = t, mode_ = -mode_;
+      return true;
+    }
+
+  private:
+    double last_ = 0, mode_ = 1;
+  };
+} // namespace
+
+// Wall-time safety: an advance that cannot finish (each step shorter than 1e-8 of the
+// interval) ends with a named SolverError after max_stalled_steps steps, instead of running on.
+TEST(Integrators, StepCapEndsAChatteringRun)
+{
+  IntegratorOptions o;
+  o.method = Method::rk4;
+  o.adaptive = false;
+  o.step = 1e-3;
+  o.event_tolerance = 1e-12;
+  Integrator integ(o);
+  Chatter s;
+  State x(2);
+  x << 1.0, 0.0;
+  double t = 0;
+  try
+    {
+      integ.advance(s, x, t, 1.0);
+      FAIL() << "the chattering run finished";
+    }
+  catch (const gearfem::SolverError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("consecutive steps"), std::string::npos) << e.what();
+    }
+}
