@@ -120,7 +120,8 @@ namespace gearfem::commands
                     "(STE(theta, T)) (docs/mesh-tables.md), ste_table.csv,\n"
                     "calibration.md, calibration.csv and calibration.png.\n"
                     "Sample run:\n"
-                    "  gearfem calibrate validation/analytical_vs_fe/calibrate.prm\n";
+                    "  gearfem calibrate validation/analytical_vs_fe/calibrate.prm   (after the Parker\n"
+                    "  sweeps: validation/parker_ste/sweeps.sh)\n";
     c.declare = declare;
     c.run     = run;
     return c;
