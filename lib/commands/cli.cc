@@ -27,6 +27,7 @@ namespace gearfem::commands
       out << "gearfem " << version_string << " (" << git_hash << ")\n"
           << "Finite-element spur-gear contact analysis.\n\n"
           << "Usage: gearfem <command> <file.prm> [--output-dir DIR] [--validate] [--resume]\n"
+          << "       gearfem solve <file.prm> --condensed condensed.h5 [--output-dir DIR]\n"
           << "       gearfem batch <study.prm> [--output-dir DIR] [--validate] [--slice K/N] [--merge]\n"
           << "       gearfem <command> --print-parameters [json|prm]\n"
           << "       gearfem <command> --help\n"
@@ -111,6 +112,7 @@ namespace gearfem::commands
                         << "  --output-dir DIR           output folder (default results/<case>)\n"
                         << "  --validate                 parse and check the input only\n"
                         << "  --resume                   continue an interrupted run (solve)\n"
+                        << "  --condensed FILE           re-solve on a condensed cycle (solve)\n"
                         << "  --slice K/N                run designs K, K+N, ... only (batch)\n"
                         << "  --merge                    aggregate finished jobs, run nothing (batch)\n"
                         << "  --print-parameters [json|prm]  all parameters with defaults\n";
@@ -123,6 +125,12 @@ namespace gearfem::commands
             ctx.resume = true;
           else if (a == "--merge")
             ctx.merge = true;
+          else if (a == "--condensed")
+            {
+              if (i + 1 >= argc)
+                throw InputError("--condensed", "(missing)", "a condensed.h5 file (gearfem condense)");
+              ctx.condensed = argv[++i];
+            }
           else if (a == "--slice")
             {
               const std::string v = i + 1 < argc ? argv[++i] : "(missing)";
@@ -149,7 +157,7 @@ namespace gearfem::commands
             }
           else if (a.size() > 1 && a[0] == '-')
             throw InputError("command-line option", a,
-                             "--output-dir, --validate, --resume, --slice, --merge, --print-parameters, --help");
+                             "--output-dir, --validate, --resume, --condensed, --slice, --merge, --print-parameters, --help");
           else
             ctx.arguments.push_back(a);
         }
@@ -208,6 +216,10 @@ namespace gearfem::commands
 
       if (ctx.resume && cmd.name != "solve")
         throw InputError("--resume", cmd.name, "the solve command", "only `gearfem solve` keeps a journal to resume");
+      if (!ctx.condensed.empty() && cmd.name != "solve")
+        throw InputError("--condensed", cmd.name, "the solve command", "only `gearfem solve` re-solves on a condensed cycle");
+      if (!ctx.condensed.empty() && ctx.resume)
+        throw InputError("--resume", "with --condensed", "a full solve", "a condensed run keeps no journal");
       if ((ctx.merge || ctx.slices > 1) && cmd.name != "batch")
         throw InputError(ctx.merge ? "--merge" : "--slice", cmd.name, "the batch command");
       dealii::ParameterHandler prm;

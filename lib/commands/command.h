@@ -29,6 +29,8 @@ namespace gearfem::commands
     bool validate_only = false;
     /// `--resume`: continue an interrupted run from the journal in output_dir (solve).
     bool resume = false;
+    /// `--condensed FILE` (solve): re-solve on a stored condensed cycle (gearfem condense).
+    std::filesystem::path condensed;
     /// `--merge` (batch): aggregate the job records in output_dir, run nothing.
     bool merge = false;
     /// `--slice K/N` (batch): run only the designs i with i % N == K - 1.

@@ -9,6 +9,7 @@ namespace gearfem::commands
   Command mesh_command();
   Command bench_command();
   Command solve_command();
+  Command condense_command();
   Command calibrate_command();
   Command batch_command();
   Command gearbox_command();
@@ -23,6 +24,7 @@ namespace gearfem::commands
       gearbox_command(),
       mesh_command(),
       solve_command(),
+      condense_command(),
       calibrate_command(),
       batch_command(),
       optimise_command(),

@@ -11,6 +11,7 @@
 #include "solve/error_estimate.h"
 #include "post/parameters.h"
 #include "solve/run.h"
+#include "condensed/resolve.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -28,6 +29,40 @@ namespace gearfem::commands
       post::declare_post_parameters(prm);
     }
 
+    /// `--condensed FILE`: the same run on a stored condensed cycle.
+    void run_on_cycle(const solve::GearContactInput &in, const post::PostOptions &post_options, const RunContext &ctx)
+    {
+      std::ostream &out = *ctx.out;
+      const condensed::CondensedCycle cycle = condensed::read_cycle(ctx.condensed);
+      const condensed::Resolver check(cycle, in); // refuses a different model or position
+      out << "condensed cycle: " << ctx.condensed.string() << ", " << cycle.positions.size()
+          << " positions built at " << cycle.build_torque << " N m (" << cycle.dofs << " DoFs)\n";
+      if (ctx.validate_only)
+        return;
+      solve::SolveRunOptions opt;
+      opt.output_dir = ctx.output_dir;
+      opt.input_name = ctx.input_file.filename().string();
+      opt.out        = &out;
+      opt.post       = post_options;
+      const solve::SolveRunResult r = condensed::run_condensed(cycle, in, opt);
+      if (in.solve.plots && r.results.sweep.n_rows() > 0)
+        run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
+      if (!r.failure.empty())
+        throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
+                          " completed positions are saved in " + ctx.output_dir.string());
+      out << "\n" << solve::summary_table(r, *in.pair, in.solve.torques) << "time: contact "
+          << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
+          << r.seconds.at("output") << " s (" << r.results.sweep.n_rows() << " positions on the condensed cycle)\n";
+      if (ctx.outcome)
+        {
+          std::ostringstream cost;
+          cost << std::setprecision(6) << "{\"condensed\": true, \"contact_seconds\": " << r.seconds.at("contact")
+               << ", \"post_seconds\": " << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
+               << ", \"positions\": " << r.results.sweep.n_rows() << "}";
+          ctx.outcome->record_members.emplace_back("cost", cost.str());
+        }
+    }
+
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
       std::ostream &out = *ctx.out;
@@ -40,6 +75,11 @@ namespace gearfem::commands
           << contact::to_string(in.contact.method) << ", slave body " << in.contact.slave << ", "
           << (in.material[0].model == fem::PlaneModel::plane_stress ? "plane stress" : "plane strain")
           << "\n";
+      if (!ctx.condensed.empty())
+        {
+          run_on_cycle(in, post_options, ctx);
+          return;
+        }
       if (ctx.validate_only)
         return;
 
@@ -138,6 +178,8 @@ namespace gearfem::commands
                     "Sample runs:\n"
                     "  gearfem solve inputs/demo.prm\n"
                     "  gearfem solve inputs/demo.prm --resume\n"
+                    "  gearfem solve inputs/demo.prm --condensed results/demo_condensed/condensed.h5 "
+                    "--output-dir results/demo_on_cycle\n"
                     "  gearfem solve validation/parker_ste/parker_ste.prm --output-dir results/parker\n";
     c.declare = declare;
     c.run     = run;

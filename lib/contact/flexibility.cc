@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -47,15 +48,72 @@ namespace gearfem::contact
     std::vector<unsigned int> dofs;
     for (const int i : missing)
       dofs.push_back(c.dofs[i]);
-    const std::vector<double> X = surface(body).body().compliance_columns(dofs, c.dofs);
-    const std::size_t n = c.dofs.size();
+    // Rows: the universe, then the support of the observed functionals.
+    std::vector<unsigned int> rows = c.dofs;
+    rows.insert(rows.end(), c.observed_dofs.begin(), c.observed_dofs.end());
+    const std::vector<double> X = surface(body).body().compliance_columns(dofs, rows);
+    const std::size_t n = c.dofs.size(), nr = rows.size();
     for (std::size_t j = 0; j < missing.size(); ++j)
       {
+        const double *x = X.data() + j * nr;
         for (std::size_t i = 0; i < n; ++i)
-          F.C(i, missing[j]) = X[j * n + i];
+          F.C(i, missing[j]) = x[i];
+        for (std::size_t r = 0; r < c.observed_rows.size(); ++r)
+          {
+            double v = 0;
+            for (const auto &[k, coef] : c.observed_rows[r])
+              v += coef * x[n + k];
+            F.S(r, missing[j]) = v;
+          }
         F.have[missing[j]] = 1;
       }
     seconds += since(t0);
+  }
+
+  void TwoBodyContact::compute_columns(int body, const std::vector<int> &idx)
+  {
+    double t = 0;
+    ensure_columns(body, idx, t);
+  }
+
+  void TwoBodyContact::observe(int body, const std::vector<std::vector<std::pair<unsigned int, double>>> &rows)
+  {
+    if (body != 1 && body != 2)
+      throw InputError("observed body", std::to_string(body), "1 | 2");
+    auto &c = cache_[body - 1];
+    std::map<unsigned int, int> where;
+    std::vector<unsigned int> support;
+    std::vector<std::vector<std::pair<int, double>>> local(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      for (const auto &[d, v] : rows[r])
+        {
+          auto it = where.find(d);
+          if (it == where.end())
+            {
+              it = where.emplace(d, int(support.size())).first;
+              support.push_back(d);
+            }
+          local[r].emplace_back(it->second, v);
+        }
+    // Identical gears share one flexibility: observing the same functionals on the second
+    // side keeps the sharing; different ones give that side its own cache.
+    const auto &other = cache_[2 - body];
+    const bool shared = other.flex == c.flex;
+    if (shared && other.observed_dofs == support && other.observed_rows == local)
+      {
+        c.observed_dofs = support, c.observed_rows = local;
+        return;
+      }
+    c.observed_dofs = std::move(support);
+    c.observed_rows = std::move(local);
+    c.flex          = std::make_shared<Flexibility>();
+    c.flex->C       = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
+    c.flex->S       = Eigen::MatrixXd::Zero(c.observed_rows.size(), c.dofs.size());
+    c.flex->have.assign(c.dofs.size(), 0);
+    // A body observed like the other side's identical body shares its cache again.
+    if (&s1_->body() == &s2_->body() && cache_[0].dofs == cache_[1].dofs &&
+        other.observed_dofs == c.observed_dofs && other.observed_rows == c.observed_rows)
+      c.flex = other.flex;
   }
 
   Vec2 TwoBodyContact::displacement(int body, int node) const

@@ -108,6 +108,8 @@ namespace gearfem::contact
     const geometry::GearPair &pair() const { return *pair_; }
     const fem::ElasticBody &body(int i) const { return *bodies_[i - 1]; }
     const TwoBodyContact &solver() const { return *solver_; }
+    /// The solver itself, for what goes beyond a solve (observed functionals, condensing).
+    TwoBodyContact &contact_solver() { return *solver_; }
     /// Contact surface of gear i (its nodes are those of ContactPoint::node).
     const ContactSurface &surface(int i) const { return *surfaces_[i - 1]; }
     unsigned int n_dofs() const { return bodies_[0]->n_dofs() + bodies_[1]->n_dofs(); }

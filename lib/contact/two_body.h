@@ -121,6 +121,8 @@ namespace gearfem::contact
   /// surface (body frame) [m]: a profile modification applied as an initial separation.
   using GapModification = std::function<double(const Vec2 &x_body)>;
 
+  struct CondensedPosition; // contact/condensed.h
+
   class TwoBodyContact
   {
   public:
@@ -142,6 +144,26 @@ namespace gearfem::contact
     /// Add `f` (material removed, >= 0 where the surface is relieved) of body `body` to every
     /// gap measured at its points, as slave point or as master projection. Null: none.
     void set_gap_modification(int body, GapModification f);
+
+    /// The universe of body `body`: its contact-surface DoFs (universe index -> global DoF),
+    /// on which the flexibility is cached.
+    const std::vector<unsigned int> &universe(int body) const { return cache_[body - 1].dofs; }
+    /// Observe linear functionals of body `body`'s displacement (rows over its global DoFs,
+    /// e.g. the fillet stresses of fem::BoundaryStressFunctionals): they are evaluated on
+    /// every flexibility column as it is computed (unit-load solves, no extra solve), so
+    /// that observed(body) * f is their value under nodal forces f on the universe. Drops
+    /// the cached columns.
+    void observe(int body, const std::vector<std::vector<std::pair<unsigned int, double>>> &rows);
+    /// The observed functionals per unit universe force: rows x universe [unit/N]; column j
+    /// is valid once flexibility column j is computed (compute_columns).
+    const Eigen::MatrixXd &observed(int body) const { return cache_[body - 1].flex->S; }
+    /// Compute the flexibility columns (and observed values) of universe indices `idx` now.
+    void compute_columns(int body, const std::vector<int> &idx);
+    /// The condensed problem of `solution`, a converged solve of `scene` by this solver
+    /// (contact/condensed.h): candidates, W, a, the unmodified gap, its curvature in q, the
+    /// modification samples, the force directions and the pressure recovery. Re-runs the
+    /// search and linearisation at the solution's state.
+    CondensedPosition condense(const Scene &scene, const ContactSolution &solution);
 
   private:
     /// One point of a slave surface (a node, or a Gauss point of a slave face) projected
@@ -192,6 +214,7 @@ namespace gearfem::contact
     struct Flexibility
     {
       Eigen::MatrixXd C;      ///< columns of K^-1 on the surface DoFs [m/N]
+      Eigen::MatrixXd S;      ///< observed functionals of the same columns (observe)
       std::vector<char> have; ///< column computed (1), queued (2)
     };
     struct BodyCache
@@ -206,6 +229,9 @@ namespace gearfem::contact
       std::vector<double> node_h;                 ///< longest face chord at each surface node [m]
       std::vector<std::vector<int>> node_faces;   ///< surface faces around each node
       std::vector<char> kink;                     ///< node at a surface end or a normal jump (a corner)
+      std::vector<unsigned int> observed_dofs;    ///< support of the observed functionals
+      /// Observed functionals: rows of (index into observed_dofs, coefficient).
+      std::vector<std::vector<std::pair<int, double>>> observed_rows;
     };
     ContactSolution solve_once(const Scene &scene, Control control, double value,
                                const ContactSolution *warm);

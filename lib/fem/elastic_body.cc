@@ -318,6 +318,54 @@ namespace gearfem::fem
     return p;
   }
 
+  void ElasticBody::locate_on_pieces(BoundaryStressSample &s, const std::vector<int> &pieces) const
+  {
+    const mesh::Vec2 x(s.stress.x[0], s.stress.x[1]);
+    double best = 1e300;
+    for (const int p : pieces)
+      {
+        const auto &piece = mesh_.pieces[p];
+        const double t    = piece.curve.closest_parameter(x, piece.t0, piece.t1);
+        const double d    = (piece.curve.point(t) - x).norm();
+        if (d < best)
+          best = d, s.piece = p, s.parameter = t;
+      }
+  }
+
+  std::vector<std::size_t> ElasticBody::order_along_outline(std::vector<BoundaryStressSample> &out) const
+  {
+    // Order along the outline: by piece, then by the direction of travel of the piece.
+    std::vector<std::size_t> perm(out.size());
+    for (std::size_t i = 0; i < perm.size(); ++i)
+      perm[i] = i;
+    std::stable_sort(perm.begin(), perm.end(), [&](std::size_t i, std::size_t j) {
+      const auto &a = out[i], &b = out[j];
+      if (a.piece != b.piece)
+        return a.piece < b.piece;
+      const auto &p = mesh_.pieces[a.piece];
+      return (p.t1 >= p.t0) ? a.parameter < b.parameter : a.parameter > b.parameter;
+    });
+    std::vector<BoundaryStressSample> sorted;
+    sorted.reserve(out.size());
+    for (const std::size_t i : perm)
+      sorted.push_back(out[i]);
+    out.swap(sorted);
+    double s = 0;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      {
+        if (i == 0)
+          {
+            const auto &p = mesh_.pieces[out[0].piece];
+            const mesh::Vec2 x0(out[0].stress.x[0], out[0].stress.x[1]);
+            s = (x0 - p.start()).norm();
+          }
+        else
+          s += out[i].stress.x.distance(out[i - 1].stress.x);
+        out[i].arc_length = s;
+      }
+    return perm;
+  }
+
   std::vector<BoundaryStressSample>
   ElasticBody::boundary_stress(const dealii::Vector<double> &u, dealii::types::boundary_id id,
                                unsigned int per_face) const
@@ -342,40 +390,79 @@ namespace gearfem::fem
               {
                 BoundaryStressSample s;
                 s.stress = stress_at(grads[k], fv.quadrature_point(k));
-                const mesh::Vec2 x(s.stress.x[0], s.stress.x[1]);
-                double best = 1e300;
-                for (const int p : pieces)
-                  {
-                    const auto &piece = mesh_.pieces[p];
-                    const double t    = piece.curve.closest_parameter(x, piece.t0, piece.t1);
-                    const double d    = (piece.curve.point(t) - x).norm();
-                    if (d < best)
-                      best = d, s.piece = p, s.parameter = t;
-                  }
+                locate_on_pieces(s, pieces);
                 out.push_back(s);
               }
           }
-    // Order along the outline: by piece, then by the direction of travel of the piece.
-    std::sort(out.begin(), out.end(), [this](const auto &a, const auto &b) {
-      if (a.piece != b.piece)
-        return a.piece < b.piece;
-      const auto &p = mesh_.pieces[a.piece];
-      return (p.t1 >= p.t0) ? a.parameter < b.parameter : a.parameter > b.parameter;
-    });
-    double s = 0;
-    for (std::size_t i = 0; i < out.size(); ++i)
-      {
-        if (i == 0)
-          {
-            const auto &p = mesh_.pieces[out[0].piece];
-            const mesh::Vec2 x0(out[0].stress.x[0], out[0].stress.x[1]);
-            s = (x0 - p.start()).norm();
-          }
-        else
-          s += out[i].stress.x.distance(out[i - 1].stress.x);
-        out[i].arc_length = s;
-      }
+    order_along_outline(out);
     return out;
+  }
+
+  BoundaryStressFunctionals ElasticBody::boundary_stress_functionals(dealii::types::boundary_id id,
+                                                                     unsigned int per_face) const
+  {
+    const std::vector<int> pieces = pieces_with_id(id);
+    if (pieces.empty())
+      throw InputError("boundary id", std::to_string(id), "an id of this body's mesh");
+    std::vector<dealii::Point<1>> pts;
+    for (unsigned int k = 0; k < per_face; ++k)
+      pts.emplace_back((k + 0.5) / per_face);
+    const dealii::Quadrature<1> q(pts, std::vector<double>(per_face, 1.0 / per_face));
+    dealii::FEFaceValues<2> fv(*mapping_, fe_, q, dealii::update_gradients | dealii::update_quadrature_points);
+    std::vector<dealii::types::global_dof_index> dofs(fe_.dofs_per_cell);
+    // The stress of a unit strain component: sigma is linear in (exx, eyy, exy).
+    const std::array<std::array<double, 3>, 3> unit = {material_.stress(1, 0, 0), material_.stress(0, 1, 0),
+                                                       material_.stress(0, 0, 1)};
+    BoundaryStressFunctionals out;
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      for (const auto face : cell->face_indices())
+        if (cell->at_boundary(face) && cell->face(face)->boundary_id() == id)
+          {
+            fv.reinit(cell, face);
+            cell->get_dof_indices(dofs);
+            for (unsigned int k = 0; k < q.size(); ++k)
+              {
+                BoundaryStressSample s;
+                s.stress.x = fv.quadrature_point(k);
+                locate_on_pieces(s, pieces);
+                out.samples.push_back(s);
+                std::array<std::vector<std::pair<unsigned int, double>>, 3> r;
+                for (unsigned int i = 0; i < fe_.dofs_per_cell; ++i)
+                  {
+                    const unsigned int c = fe_.system_to_component_index(i).first;
+                    const auto g         = fv.shape_grad_component(i, k, c);
+                    // Strain of this shape function: exx = g0 (c = 0), eyy = g1 (c = 1),
+                    // exy = (du_x/dy + du_y/dx) / 2.
+                    const double e[3] = {c == 0 ? g[0] : 0.0, c == 1 ? g[1] : 0.0, 0.5 * (c == 0 ? g[1] : g[0])};
+                    for (int comp = 0; comp < 3; ++comp)
+                      {
+                        const double v = unit[0][comp] * e[0] + unit[1][comp] * e[1] + unit[2][comp] * e[2];
+                        if (v != 0)
+                          r[comp].emplace_back(static_cast<unsigned int>(dofs[i]), v);
+                      }
+                  }
+                for (auto &x : r)
+                  rows.push_back(std::move(x));
+              }
+          }
+    const auto perm = order_along_outline(out.samples);
+    out.rows.reserve(rows.size());
+    for (const std::size_t i : perm)
+      for (int comp = 0; comp < 3; ++comp)
+        out.rows.push_back(std::move(rows[3 * i + comp]));
+    return out;
+  }
+
+  StressPoint ElasticBody::stress_point(double sxx, double syy, double sxy, const Point2 &x) const
+  {
+    StressPoint s;
+    s.x = x, s.sxx = sxx, s.syy = syy, s.sxy = sxy;
+    s.szz          = material_.stress_zz(sxx, syy);
+    const auto p   = principal_stresses(sxx, syy, sxy);
+    s.s1 = p[0], s.s2 = p[1];
+    s.von_mises = von_mises(sxx, syy, sxy, s.szz);
+    return s;
   }
 
   StressPeak ElasticBody::peak_principal_stress(const dealii::Vector<double> &u,

@@ -70,6 +70,18 @@ namespace gearfem::fem
     int piece         = -1;
   };
 
+  /// The stress along one boundary as linear functionals of the displacement: the samples
+  /// of ElasticBody::boundary_stress (same points, same order, same arc length; stresses
+  /// left zero) and, per sample, three sparse rows (sigma_xx, sigma_yy, sigma_xy) with
+  /// sigma = sum_d row_d u_d [Pa per m]. Applied to the columns of K^-1 they give the
+  /// stress influence coefficients of nodal forces (unit-load solves).
+  struct BoundaryStressFunctionals
+  {
+    std::vector<BoundaryStressSample> samples;
+    /// rows[3 i + c]: component c (xx, yy, xy) of sample i, as (DoF, coefficient).
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+  };
+
   /// Peak of the maximum principal stress along one boundary (e.g. a fillet).
   struct StressPeak
   {
@@ -145,6 +157,12 @@ namespace gearfem::fem
     std::vector<BoundaryStressSample> boundary_stress(const dealii::Vector<double> &u,
                                                       dealii::types::boundary_id id,
                                                       unsigned int per_face = 8) const;
+    /// The same samples as linear functionals of u (BoundaryStressFunctionals).
+    BoundaryStressFunctionals boundary_stress_functionals(dealii::types::boundary_id id,
+                                                          unsigned int per_face = 8) const;
+    /// The stress state of components (sxx, syy, sxy) [Pa] at x: szz, principal stresses
+    /// and von Mises of this body's material (as boundary_stress reports them).
+    StressPoint stress_point(double sxx, double syy, double sxy, const Point2 &x) const;
     /// Fillet extractor: the peak of sigma_1 along boundary `id`.
     StressPeak peak_principal_stress(const dealii::Vector<double> &u,
                                      dealii::types::boundary_id id,
@@ -183,6 +201,11 @@ namespace gearfem::fem
   private:
     StressPoint stress_at(const std::vector<dealii::Tensor<1, 2>> &grad_u, const Point2 &x) const;
     std::vector<int> pieces_with_id(dealii::types::boundary_id id) const;
+    /// Exact-curve piece and parameter of boundary sample `s` (nearest of `pieces`).
+    void locate_on_pieces(BoundaryStressSample &s, const std::vector<int> &pieces) const;
+    /// The permutation that orders boundary samples along the outline (by piece, then
+    /// along the piece), and their arc lengths in that order.
+    std::vector<std::size_t> order_along_outline(std::vector<BoundaryStressSample> &samples) const;
 
     mesh::MeshData mesh_;
     Elasticity material_;

@@ -35,8 +35,9 @@ namespace gearfem::post
     }
 
     /// Peak pressure, profile, ellipse fit and Hertz comparison of one loaded pair.
-    void pressure_and_hertz(const contact::GearContactModel &model, ToothPairResult &tp, const ContactSolution &sol,
-                            const std::array<geometry::Placement, 2> &P, int min_patch_nodes)
+    void pressure_and_hertz(const geometry::GearPair &pair, const fem::Elasticity material[2], ToothPairResult &tp,
+                            const ContactSolution &sol, const std::array<geometry::Placement, 2> &P,
+                            int min_patch_nodes)
     {
       // Pressure profile along the flank of this pair (its slave nodes, pair frame).
       const ContactPoint *peak = nullptr;
@@ -65,7 +66,6 @@ namespace gearfem::post
       // Hertz on the local radii of curvature at the peak: the involute's sqrt(r^2 - r_b^2),
       // or for other profiles (B-spline flanks, closed racks) the curvature of the outline
       // itself (a hollow flank has a negative one; the sum must be positive).
-      const auto &pair  = model.pair();
       const double rb1 = pair.base_radius(1), rb2 = pair.base_radius(2);
       tp.radius_pinion  = (peak->x - P[0].centre).norm();
       tp.radius_gear    = (peak->x - P[1].centre).norm();
@@ -79,7 +79,7 @@ namespace gearfem::post
         }
       if (rho1 != 0 && rho2 != 0)
         {
-          const auto &mat1 = model.body(1).material(), &mat2 = model.body(2).material();
+          const auto &mat1 = material[0], &mat2 = material[1];
           contact::HertzCase hc;
           hc.R1 = rho1, hc.R2 = rho2;
           hc.E1 = mat1.youngs_modulus, hc.E2 = mat2.youngs_modulus;
@@ -139,14 +139,15 @@ namespace gearfem::post
     require_range("Post/Tip edge band", o.tip_edge_band, 0.0, 0.5, "m_n");
   }
 
-  PositionResult evaluate_position(const contact::GearContactModel &model, const contact::ContactState &state,
-                                   const PostOptions &options, bool keep)
+  PositionResult evaluate_contact(const geometry::GearPair &pair, const fem::Elasticity material[2],
+                                  const contact::ContactState &state, const std::array<geometry::Placement, 2> &P,
+                                  const PostOptions &options,
+                                  const std::function<void(ToothPairResult &)> &root_stress)
   {
     validate(options);
     PositionResult r;
     r.phi1 = state.phi1, r.torque = state.torque;
     const auto &sol  = state.solution;
-    const auto &pair = model.pair();
     const double rb1 = pair.base_radius(1);
     r.rotation     = sol.q;
     r.ste          = sol.q * rb1;
@@ -154,24 +155,13 @@ namespace gearfem::post
     r.k_secant     = r.ste > 0 ? r.normal_force / r.ste : 0.0;
     r.k_tangent    = sol.tangent / (rb1 * rb1);
 
-    // Full displacement fields and equilibrium checks.
-    const fem::ElasticBody &b1 = model.body(1), &b2 = model.body(2);
-    dealii::Vector<double> f[2] = {dealii::Vector<double>(b1.n_dofs()), dealii::Vector<double>(b2.n_dofs())};
-    for (int b = 0; b < 2; ++b)
-      for (const auto &[d, v] : sol.forces[b])
-        f[b][d] += v;
-    dealii::Vector<double> u[2] = {b1.solve(f[0]), b2.solve(f[1])};
-    r.torque_contact  = -b1.moment(f[0]);
-    r.torque_reaction = b1.moment(b1.reactions(u[0], f[0]));
-    r.torque_gear     = std::abs(b2.moment(f[1]));
-
     // Load sharing, pressure and root stress by tooth pair.
-    const auto P = model.placements(state.phi1, sol.q);
-    auto pairs   = load_sharing(pair, sol, P, options.tip_edge_band);
+    auto pairs = load_sharing(pair, sol, P, options.tip_edge_band);
     for (auto &[k, tp] : pairs)
       {
-        pressure_and_hertz(model, tp, sol, P, options.min_patch_nodes);
-        root_stress(model, u, tp);
+        pressure_and_hertz(pair, material, tp, sol, P, options.min_patch_nodes);
+        if (root_stress)
+          root_stress(tp);
         r.max_root_stress_pinion = std::max(r.max_root_stress_pinion, tp.root_stress_pinion);
         r.max_root_stress_gear   = std::max(r.max_root_stress_gear, tp.root_stress_gear);
         (tp.edge ? r.p_max_edge : r.p_max) = std::max(tp.edge ? r.p_max_edge : r.p_max, tp.p_max);
@@ -182,6 +172,26 @@ namespace gearfem::post
           ++r.n_pairs;
         r.pairs.push_back(std::move(tp));
       }
+    return r;
+  }
+
+  PositionResult evaluate_position(const contact::GearContactModel &model, const contact::ContactState &state,
+                                   const PostOptions &options, bool keep)
+  {
+    const auto &sol = state.solution;
+    // Full displacement fields and equilibrium checks.
+    const fem::ElasticBody &b1 = model.body(1), &b2 = model.body(2);
+    dealii::Vector<double> f[2] = {dealii::Vector<double>(b1.n_dofs()), dealii::Vector<double>(b2.n_dofs())};
+    for (int b = 0; b < 2; ++b)
+      for (const auto &[d, v] : sol.forces[b])
+        f[b][d] += v;
+    dealii::Vector<double> u[2] = {b1.solve(f[0]), b2.solve(f[1])};
+    const fem::Elasticity material[2] = {b1.material(), b2.material()};
+    PositionResult r = evaluate_contact(model.pair(), material, state, model.placements(state.phi1, sol.q), options,
+                                        [&](ToothPairResult &tp) { root_stress(model, u, tp); });
+    r.torque_contact  = -b1.moment(f[0]);
+    r.torque_reaction = b1.moment(b1.reactions(u[0], f[0]));
+    r.torque_gear     = std::abs(b2.moment(f[1]));
     if (keep)
       r.u[0] = std::move(u[0]), r.u[1] = std::move(u[1]);
     return r;

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 namespace gearfem::post
@@ -85,6 +86,16 @@ namespace gearfem::post
     double t_post = 0;           ///< wall time of the evaluation [s] (set by Evaluator)
     dealii::Vector<double> u[2]; ///< body-frame displacements (kept only when asked)
   };
+
+  /// The evaluation that needs no finite-element field, shared by the full and the condensed
+  /// routes: STE, secant and tangent stiffness, load sharing, pressure with the ellipse fit
+  /// and Hertz, edge flags, n_pairs and the peak pressures of state `s` with the rigid
+  /// placements `P` (GearContactModel::placements at its rotation). `root_stress` (may be
+  /// empty) fills the root stresses of each loaded pair; the equilibrium moments are left 0.
+  PositionResult evaluate_contact(const geometry::GearPair &pair, const fem::Elasticity material[2],
+                                  const contact::ContactState &s, const std::array<geometry::Placement, 2> &P,
+                                  const PostOptions &options,
+                                  const std::function<void(ToothPairResult &)> &root_stress);
 
   /// Evaluate the converged state `s` of `model`. `keep_displacements` keeps u for VTU output.
   PositionResult evaluate_position(const contact::GearContactModel &model, const contact::ContactState &s,

@@ -224,7 +224,7 @@ namespace gearfem::solve
     return std::make_unique<contact::GearContactModel>(*pair, mesh, material, fe, contact, unmodified_pair.get());
   }
 
-  std::string model_key(const GearContactInput &in)
+  std::string model_key(const GearContactInput &in, bool gap_route)
   {
     std::ostringstream s;
     s.precision(17);
@@ -251,7 +251,7 @@ namespace gearfem::solve
     s << "contact " << static_cast<int>(c.method) << ' ' << c.penalty_factor << ' ' << c.search_distance << ' '
       << c.tolerance << ' ' << c.max_active_set_iterations << ' ' << c.max_geometry_iterations << ' '
       << c.max_load_cuts << ' ' << c.slave << ' ' << c.per_zone_slaves << ' ' << static_cast<int>(c.gap) << ' '
-      << c.micro_geometry_as_gap << '\n';
+      << (c.micro_geometry_as_gap || gap_route) << '\n';
     return io::content_hash(s.str());
   }
 } // namespace gearfem::solve

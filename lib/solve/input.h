@@ -74,7 +74,8 @@ namespace gearfem::solve
   /// and the centre distance), mesh, material, finite elements and contact options, so that
   /// one factorised model serves both (a batch shares it). Torques, positions, outputs and a
   /// tip relief applied as a gap (`Contact/Micro-geometry = gap`) do not enter it.
-  std::string model_key(const GearContactInput &in);
+  /// `gap_route`: the key as if `Contact/Micro-geometry = gap` (the condensed cycle's key).
+  std::string model_key(const GearContactInput &in, bool gap_route = false);
 
   /// Declare Rack, Gear 1/2, Pair, Material, Mesh, Finite elements, Contact and Solve.
   void declare_gear_contact_input(dealii::ParameterHandler &prm);

@@ -165,18 +165,6 @@ namespace gearfem::solve
       Progress progress_;
     };
 
-    /// Unresolved loaded Hertzian pairs (fewer than Post/Min patch nodes across the patch,
-    /// load share above Post/Unresolved share), per torque.
-    std::map<double, int> count_unresolved(const io::SolveResults &t, double min_share)
-    {
-      std::map<double, int> out;
-      const auto T = t.pairs.column("torque"), share = t.pairs.column("load share"),
-                 res = t.pairs.column("resolved"), edge = t.pairs.column("edge contact");
-      for (std::size_t i = 0; i < T.size(); ++i)
-        out[T[i]] += share[i] > min_share && res[i] == 0 && edge[i] == 0;
-      return out;
-    }
-
     /// Replay the journal into the tables and the PVD records; returns where to start.
     loading::SweepStart resume_from(const std::filesystem::path &journal, const io::JournalHeader &expected,
                                     io::SolveResults &t, VtuObserver &vtu,
@@ -251,6 +239,30 @@ namespace gearfem::solve
       }
   }
 
+  std::map<double, int> count_unresolved(const io::SolveResults &t, double min_share)
+  {
+    std::map<double, int> out;
+    const auto T = t.pairs.column("torque"), share = t.pairs.column("load share"),
+               res = t.pairs.column("resolved"), edge = t.pairs.column("edge contact");
+    for (std::size_t i = 0; i < T.size(); ++i)
+      out[T[i]] += share[i] > min_share && res[i] == 0 && edge[i] == 0;
+    return out;
+  }
+
+  io::SolveResults start_results(const solve::GearContactInput &in, const std::string &input_name,
+                                 const std::string &program)
+  {
+    const auto &pair = *in.pair;
+    io::SolveResults t = io::make_solve_results();
+    t.attributes       = {{"program", program},
+                          {"geometry_hash", geometry::geometry_fingerprint(pair)},
+                          {"method", contact::to_string(in.contact.method)},
+                          {"input", input_name}};
+    for (const char *n : {"A", "B", "C", "D", "E"})
+      t.line_of_action.add_row({double(point_code(n)), pair.point(n).roll_angle / units::deg});
+    return t;
+  }
+
   SolveRunResult run_solve(contact::GearContactModel &model, const solve::GearContactInput &in,
                            const SolveRunOptions &options)
   {
@@ -263,13 +275,7 @@ namespace gearfem::solve
 
     SolveRunResult run;
     io::SolveResults &t = run.results;
-    t                   = io::make_solve_results();
-    t.attributes        = {{"program", "gearfem solve"},
-                           {"geometry_hash", geometry::geometry_fingerprint(pair)},
-                           {"method", contact::to_string(in.contact.method)},
-                           {"input", options.input_name}};
-    for (const char *n : {"A", "B", "C", "D", "E"})
-      t.line_of_action.add_row({double(point_code(n)), pair.point(n).roll_angle / units::deg});
+    t                   = start_results(in, options.input_name);
 
     const double z_ratio    = double(pair.gear(2).teeth()) / pair.gear(1).teeth();
     const double face_width = std::min(in.material[0].thickness, in.material[1].thickness);

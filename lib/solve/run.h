@@ -53,6 +53,14 @@ namespace gearfem::solve
   void append_position(io::SolveResults &tables, const contact::ContactState &s, const post::PositionResult &r,
                        const std::string &name, int index, double z_ratio, double face_width);
 
+  /// Empty solve-results tables for `in`: the root attributes (program, geometry hash,
+  /// method, input) and the line of action.
+  io::SolveResults start_results(const solve::GearContactInput &in, const std::string &input_name,
+                                 const std::string &program = "gearfem solve");
+  /// Unresolved loaded Hertzian pairs (fewer than Post/Min patch nodes across the patch,
+  /// load share above `min_share`, not edge contact), per torque.
+  std::map<double, int> count_unresolved(const io::SolveResults &t, double min_share);
+
   /// Run the sweep of `in` on `model` and write the results (docs/output-format.md).
   SolveRunResult run_solve(contact::GearContactModel &model, const solve::GearContactInput &in,
                            const SolveRunOptions &options);

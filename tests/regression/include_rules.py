@@ -30,10 +30,12 @@ ALLOWED = {
     'loading': {'base', 'params', 'geometry', 'mesh', 'fem', 'contact'},
     'post': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading'},
     'solve': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post'},
+    'condensed': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post',
+                  'solve'},
     'optimise': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post',
-                 'solve'},
+                 'solve', 'condensed'},
     'gearbox': {'base', 'params', 'io', 'geometry', 'analytical', 'rating', 'solve'},
-    'batch': {'base', 'params', 'io', 'geometry', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve'},
+    'batch': {'base', 'params', 'io', 'geometry', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve', 'condensed'},
     'commands': None,  # wires everything together
 }
 # Modules (or their light parts) that must not see deal.II, gmsh or PETSc.

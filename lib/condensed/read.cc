@@ -1,0 +1,256 @@
+// condensed.h5: the reader (docs/output-format.md).
+#include "condensed/cycle.h"
+
+#include "base/errors.h"
+#include "io/hdf5_util.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace gearfem::condensed
+{
+  namespace
+  {
+    using namespace io::hdf5;
+
+    class GroupReader
+    {
+    public:
+      GroupReader(const Reader &r, hid_t parent, const std::string &path, const std::string &name)
+        : r_(r)
+        , path_(path + "/" + name)
+        , g_(H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0 ? H5Gopen2(parent, name.c_str(), H5P_DEFAULT) : -1,
+             H5Gclose)
+      {
+        if (!g_.valid())
+          r_.fail(path_, "", "missing or not a group", "a group");
+      }
+      std::vector<double> vec(const char *name, std::size_t n = std::size_t(-1)) const
+      {
+        std::vector<hsize_t> dims;
+        auto v = r_.dataset(g_.get(), path_, name, 1, dims);
+        if (n != std::size_t(-1) && v.size() != n)
+          r_.fail(path_ + "/" + name, "", std::to_string(v.size()) + " values", std::to_string(n) + " values");
+        return v;
+      }
+      std::vector<double> mat(const char *name, std::size_t rows, std::size_t cols) const
+      {
+        std::vector<hsize_t> dims;
+        auto v = r_.dataset(g_.get(), path_, name, 2, dims);
+        if ((rows != std::size_t(-1) && dims[0] != rows) || (cols != std::size_t(-1) && dims[1] != cols))
+          r_.fail(path_ + "/" + name, "", std::to_string(dims[0]) + " x " + std::to_string(dims[1]),
+                  (rows == std::size_t(-1) ? std::string("n") : std::to_string(rows)) + " x " +
+                    (cols == std::size_t(-1) ? std::string("n") : std::to_string(cols)));
+        last_dims = dims;
+        return v;
+      }
+      /// Compressed rows `prefix`_offsets with fields `names`; n rows.
+      std::vector<std::vector<std::vector<double>>> rows(const std::string &prefix, std::vector<std::string> names,
+                                                         std::size_t n, std::size_t range) const
+      {
+        const auto off = vec((prefix + "_offsets").c_str(), n + 1);
+        std::vector<std::vector<double>> fields;
+        for (const auto &f : names)
+          fields.push_back(vec((prefix + "_" + f).c_str()));
+        const std::size_t total = fields.empty() ? 0 : fields[0].size();
+        std::vector<std::vector<std::vector<double>>> out(n);
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            if (!(off[i] >= 0 && off[i] <= off[i + 1] && off[i + 1] <= double(total)))
+              r_.fail(path_ + "/" + prefix + "_offsets", "", "not non-decreasing within the entries",
+                      "offsets of compressed rows");
+            for (auto k = std::size_t(off[i]); k < std::size_t(off[i + 1]); ++k)
+              {
+                std::vector<double> e;
+                for (const auto &f : fields)
+                  {
+                    if (f.size() != total)
+                      r_.fail(path_ + "/" + prefix, "", "fields of different lengths", "equal lengths");
+                    e.push_back(f[k]);
+                  }
+                if (range > 0 && !(e[0] >= 0 && e[0] < double(range) && e[0] == std::floor(e[0])))
+                  r_.fail(path_ + "/" + prefix + "_" + names[0], "", to_string_g(e[0]),
+                          "an index in [0, " + std::to_string(range) + ")");
+                out[i].push_back(std::move(e));
+              }
+          }
+        return out;
+      }
+      hid_t get() const { return g_.get(); }
+      const std::string &path() const { return path_; }
+      mutable std::vector<hsize_t> last_dims;
+
+    private:
+      const Reader &r_;
+      std::string path_;
+      Hid g_;
+    };
+
+    std::vector<std::vector<std::pair<int, double>>> index_value(const GroupReader &g, const std::string &prefix,
+                                                                 std::size_t n, std::size_t range)
+    {
+      std::vector<std::vector<std::pair<int, double>>> out(n);
+      const auto rows = g.rows(prefix, {"index", "value"}, n, range);
+      for (std::size_t i = 0; i < n; ++i)
+        for (const auto &e : rows[i])
+          out[i].emplace_back(int(e[0]), e[1]);
+      return out;
+    }
+
+    void read_body(const Reader &r, hid_t f, int b, CycleBody &body)
+    {
+      const GroupReader g(r, f, "", "body" + std::to_string(b + 1));
+      body.teeth = int(r.integer_attribute(g.get(), g.path(), "teeth", "an integer"));
+      body.x     = g.vec("universe_x");
+      body.y     = g.vec("universe_y", body.x.size());
+      for (const double c : g.vec("universe_component", body.x.size()))
+        body.component.push_back(int(c));
+      const auto cols = g.vec("stress_columns");
+      for (const double c : cols)
+        {
+          if (!(c >= 0 && c < double(body.x.size())))
+            r.fail(g.path() + "/stress_columns", "", to_string_g(c), "a universe index");
+          body.stress_columns.push_back(int(c));
+        }
+      const auto s = g.mat("stress", std::size_t(-1), cols.size());
+      const auto rows = Eigen::Index(g.last_dims[0]), nc = Eigen::Index(cols.size());
+      body.stress.resize(rows, nc);
+      for (Eigen::Index i = 0; i < rows; ++i)
+        for (Eigen::Index j = 0; j < nc; ++j)
+          body.stress(i, j) = s[std::size_t(i * nc + j)];
+      const auto tooth = g.vec("fillet_tooth"), first = g.vec("fillet_first_row", tooth.size()),
+                 size = g.vec("fillet_samples", tooth.size());
+      const auto x = g.vec("fillet_x"), y = g.vec("fillet_y", x.size()), arc = g.vec("fillet_arc", x.size());
+      std::size_t at = 0;
+      for (std::size_t t = 0; t < tooth.size(); ++t)
+        {
+          FilletSamples fs;
+          fs.tooth     = int(tooth[t]);
+          fs.first_row = int(first[t]);
+          const auto n = std::size_t(size[t]);
+          if (at + n > x.size() || fs.first_row < 0 || Eigen::Index(fs.first_row + 3 * n) > rows)
+            r.fail(g.path() + "/fillet_samples", "", "more samples than stored", "consistent fillet tables");
+          fs.x.assign(x.begin() + long(at), x.begin() + long(at + n));
+          fs.y.assign(y.begin() + long(at), y.begin() + long(at + n));
+          fs.arc.assign(arc.begin() + long(at), arc.begin() + long(at + n));
+          at += n;
+          body.fillets.push_back(std::move(fs));
+        }
+    }
+
+    contact::CondensedPosition read_scene(const Reader &r, hid_t f, const std::string &path, const std::string &name,
+                                          const std::size_t universe[2])
+    {
+      const GroupReader g(r, f, path, name);
+      contact::CondensedPosition p;
+      p.q_build    = r.double_attribute(g.get(), g.path(), "q_build", "rad");
+      p.load_build = r.double_attribute(g.get(), g.path(), "load_build", "N m");
+      p.load_lo    = r.double_attribute(g.get(), g.path(), "load_lo", "N m");
+      p.load_hi    = r.double_attribute(g.get(), g.path(), "load_hi", "N m");
+      const auto pl = g.mat("placement", 2, 3);
+      for (int b = 0; b < 2; ++b)
+        p.placement[b] = {contact::Vec2(pl[3 * b], pl[3 * b + 1]), pl[3 * b + 2]};
+      const auto a = g.vec("a");
+      const std::size_t m = a.size();
+      const auto W = g.mat("W", m, m);
+      p.W = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(W.data(),
+                                                                                                     Eigen::Index(m),
+                                                                                                     Eigen::Index(m));
+      auto ev = [&](const char *n) {
+        const auto v = g.vec(n, m);
+        return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(m)));
+      };
+      p.a = ev("a"), p.ghat = ev("ghat"), p.curvature = ev("curvature"), p.D = ev("D");
+      const auto t = g.mat("candidates", m, 21);
+      p.cand.resize(m);
+      for (std::size_t k = 0; k < m; ++k)
+        {
+          const double *c = t.data() + 21 * k;
+          auto &q         = p.cand[k].point;
+          if (!(c[0] == 1 || c[0] == 2))
+            r.fail(g.path() + "/candidates", "", "slave body " + to_string_g(c[0]), "1 | 2");
+          q.slave_body = int(c[0]), q.node = int(c[1]), q.slave_tooth = int(c[2]), q.master_tooth = int(c[3]);
+          q.master_piece = int(c[4]), q.master_t = c[5];
+          q.slave_code = unsigned(c[6]), q.master_code = unsigned(c[7]), q.master_corner = c[8] != 0;
+          q.x = contact::Vec2(c[9], c[10]), q.master_point = contact::Vec2(c[11], c[12]);
+          q.normal = contact::Vec2(c[13], c[14]);
+          q.gap = c[15], q.force = c[16], q.pressure = c[17], q.weight = c[18], q.arm = c[19];
+          p.cand[k].edge = c[20] != 0;
+        }
+      p.B[0]     = index_value(g, "B1", m, universe[0]);
+      p.B[1]     = index_value(g, "B2", m, universe[1]);
+      p.pressure = index_value(g, "pressure", m, m);
+      p.modification.assign(m, {});
+      const auto mod = g.rows("modification", {"body", "x", "y", "weight"}, m, 0);
+      for (std::size_t k = 0; k < m; ++k)
+        for (const auto &e : mod[k])
+          {
+            if (!(e[0] == 1 || e[0] == 2))
+              r.fail(g.path() + "/modification_body", "", to_string_g(e[0]), "1 | 2");
+            p.modification[k].push_back({int(e[0]), contact::Vec2(e[1], e[2]), e[3]});
+          }
+      return p;
+    }
+  } // namespace
+
+  CondensedCycle read_cycle(const std::filesystem::path &file)
+  {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      throw InputError("condensed cycle file", name, "an existing condensed.h5 (gearfem condense)",
+                       "file not found or not a file");
+    const QuietHdf5 quiet;
+    if (H5Fis_hdf5(name.c_str()) <= 0)
+      throw InputError("condensed cycle file", name, "an HDF5 condensed cycle", "not an HDF5 file, or corrupt");
+    Hid f(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!f.valid())
+      throw InputError("condensed cycle file", name, "a readable HDF5 file", "corrupt or truncated");
+    const Reader r(name, "condensed cycle file");
+    const std::string format = r.string_attribute(f.get(), "/", "format");
+    if (format != file_format)
+      r.fail("/", "format", format, file_format, "not a gearfem condensed cycle");
+    const std::string version = r.string_attribute(f.get(), "/", "format_version");
+    if (version != file_format_version)
+      r.fail("/", "format_version", version, file_format_version,
+             "this gearfem reads condensed-cycle format version " + std::string(file_format_version));
+    CondensedCycle c;
+    c.key           = r.string_attribute(f.get(), "/", "model_key");
+    c.geometry_hash = r.string_attribute(f.get(), "/", "geometry_hash");
+    c.input_name    = r.string_attribute(f.get(), "/", "input");
+    c.method        = r.string_attribute(f.get(), "/", "method");
+    c.build_torque  = r.double_attribute(f.get(), "/", "build_torque", "N m");
+    c.torque_lo     = r.double_attribute(f.get(), "/", "torque_lo", "N m");
+    c.torque_hi     = r.double_attribute(f.get(), "/", "torque_hi", "N m");
+    c.setup_seconds = r.double_attribute(f.get(), "/", "setup_seconds", "s");
+    c.build_seconds = r.double_attribute(f.get(), "/", "build_seconds", "s");
+    c.dofs          = int(r.integer_attribute(f.get(), "/", "dofs", "an integer"));
+    std::vector<hsize_t> dims;
+    const auto phi  = r.dataset(f.get(), "", "roll_angle", 1, dims);
+    const auto code = r.dataset(f.get(), "", "point_code", 1, dims);
+    if (code.size() != phi.size())
+      r.fail("/point_code", "", std::to_string(code.size()) + " values", std::to_string(phi.size()) + " values");
+    for (std::size_t k = 0; k < phi.size(); ++k)
+      {
+        const int pc = int(code[k]);
+        c.positions.emplace_back(pc >= 1 && pc <= 5 ? std::string(1, "ABCDE"[pc - 1]) : std::string(), phi[k]);
+      }
+    for (int b = 0; b < 2; ++b)
+      read_body(r, f.get(), b, c.body[b]);
+    const std::size_t universe[2] = {c.body[0].x.size(), c.body[1].x.size()};
+    for (std::size_t k = 0; k < phi.size(); ++k)
+      {
+        std::ostringstream n;
+        n << "position_" << std::setw(4) << std::setfill('0') << k;
+        const GroupReader g(r, f.get(), "", n.str());
+        const long long ns = r.integer_attribute(g.get(), g.path(), "scenes", "an integer >= 1");
+        if (ns < 1 || ns > 1000)
+          r.fail(g.path(), "scenes", std::to_string(ns), "1..1000");
+        c.cycle.emplace_back();
+        for (long long s = 0; s < ns; ++s)
+          c.cycle.back().push_back(read_scene(r, g.get(), g.path(), "scene_" + std::to_string(s), universe));
+      }
+    return c;
+  }
+} // namespace gearfem::condensed

@@ -1,0 +1,208 @@
+#include "condensed/resolve.h"
+
+#include "base/errors.h"
+#include "base/progress.h"
+#include "base/units.h"
+#include "fem/elasticity.h"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace gearfem::condensed
+{
+  namespace
+  {
+    using Clock = std::chrono::steady_clock;
+    double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+  } // namespace
+
+  Resolver::Resolver(const CondensedCycle &cycle, const solve::GearContactInput &variant)
+    : cycle_(cycle)
+    , in_(variant)
+  {
+    check_condensable(variant);
+    if (condensed_key(variant) != cycle.key)
+      throw InputError("--condensed", cycle.input_name.empty() ? "(the cycle)" : cycle.input_name,
+                       "a condensed cycle built from the same geometry, mesh, material, finite elements and "
+                       "contact options",
+                       "the variant's model differs from the cycle's (only torques, positions, outputs and a "
+                       "gap-route tip relief may differ); build its own cycle with `gearfem condense`");
+    for (const auto &[name, phi] : variant.positions())
+      {
+        std::size_t best = cycle.positions.size();
+        for (std::size_t k = 0; k < cycle.positions.size(); ++k)
+          if (std::abs(cycle.positions[k].second - phi) <= 1e-12 * std::max(1.0, std::abs(phi)))
+            best = k;
+        if (best == cycle.positions.size())
+          throw InputError("Solve (positions)", to_string_g(phi / units::deg) + " deg",
+                           "a roll angle of the condensed cycle (" + std::to_string(cycle.positions.size()) +
+                             " positions from " + to_string_g(cycle.positions.front().second / units::deg) +
+                             " deg)",
+                           "the condensed route re-solves the stored positions only");
+        index_.push_back(best);
+      }
+    for (int b = 0; b < 2; ++b)
+      {
+        column_[b].assign(cycle.body[b].x.size(), -1);
+        for (std::size_t j = 0; j < cycle.body[b].stress_columns.size(); ++j)
+          column_[b][cycle.body[b].stress_columns[j]] = int(j);
+        material_[b] = variant.material[b];
+      }
+  }
+
+  Eigen::VectorXd Resolver::offsets(std::size_t k) const
+  {
+    return offsets(cycle_.cycle.at(k).front());
+  }
+
+  Eigen::VectorXd Resolver::offsets(const contact::CondensedPosition &p) const
+  {
+    Eigen::VectorXd o = Eigen::VectorXd::Zero(Eigen::Index(p.size()));
+    using Relief      = geometry::TipRelief::Kind;
+    const geometry::ToothProfile *g[2] = {&in_.pair->gear(1), &in_.pair->gear(2)};
+    const bool any[2] = {g[0]->parameters().relief.kind != Relief::none, g[1]->parameters().relief.kind != Relief::none};
+    if (!any[0] && !any[1])
+      return o;
+    for (std::size_t c = 0; c < p.size(); ++c)
+      for (const auto &s : p.modification[c])
+        if (any[s.body - 1])
+          o[Eigen::Index(c)] += s.weight * g[s.body - 1]->relief_at_radius(s.x.norm());
+    return o;
+  }
+
+  std::pair<double, double> Resolver::root_stress(int b, int tooth, const std::vector<std::pair<int, double>> &f) const
+  {
+    const auto &body = cycle_.body[b];
+    for (const auto &fs : body.fillets)
+      {
+        if (fs.tooth != tooth)
+          continue;
+        double peak = -1e300, radius = 0;
+        for (std::size_t i = 0; i < fs.size(); ++i)
+          {
+            double s[3] = {0, 0, 0};
+            for (int c = 0; c < 3; ++c)
+              {
+                const Eigen::Index row = Eigen::Index(fs.first_row + 3 * i + c);
+                for (const auto &[u, v] : f)
+                  {
+                    const int j = column_[b][u];
+                    if (j < 0)
+                      throw SolverError("condensed re-solve: a force at universe DoF " + std::to_string(u) +
+                                        " of body " + std::to_string(b + 1) +
+                                        " has no stored stress influence (corrupt cycle?)");
+                    s[c] += body.stress(row, j) * v;
+                  }
+              }
+            const double s1 = fem::principal_stresses(s[0], s[1], s[2])[0];
+            if (s1 > peak)
+              peak = s1, radius = std::hypot(fs.x[i], fs.y[i]);
+          }
+        return {peak, radius};
+      }
+    throw SolverError("condensed re-solve: tooth " + std::to_string(tooth) + " of gear " + std::to_string(b + 1) +
+                      " is loaded but the cycle holds no fillet influence for it (not a fine tooth)");
+  }
+
+  Resolved Resolver::solve(std::size_t k, double torque, const post::PostOptions &options) const
+  {
+    require_greater("Solve/Torques", torque, 0.0, "N m");
+    return solve(k, torque, offsets(cycle_.at(k, torque)), options);
+  }
+
+  Resolved Resolver::solve(std::size_t k, double torque, const Eigen::VectorXd &off,
+                           const post::PostOptions &options) const
+  {
+    require_greater("Solve/Torques", torque, 0.0, "N m");
+    const auto t0 = Clock::now();
+    Resolved r;
+    contact::CondensedSolution cs;
+    const contact::CondensedPosition *pp = nullptr;
+    try
+      {
+        pp = &cycle_.at(k, torque);
+        cs = contact::solve_condensed(*pp, off, torque);
+      }
+    catch (const SolverError &e)
+      {
+        throw SolverError("position phi1 = " + to_string_g(cycle_.positions[k].second / units::deg) + " deg, torque " +
+                          to_string_g(torque) + " N m: " + e.what());
+      }
+    r.state.phi1      = cycle_.positions[k].second;
+    r.state.torque    = torque;
+    r.state.solution  = std::move(cs.solution);
+    r.state.t_contact = since(t0);
+
+    const auto t1 = Clock::now();
+    const auto &p = *pp;
+    std::array<geometry::Placement, 2> P = {p.placement[0], p.placement[1]};
+    P[0].angle += r.state.solution.q;
+    const int z[2] = {cycle_.body[0].teeth, cycle_.body[1].teeth};
+    r.result = post::evaluate_contact(*in_.pair, material_, r.state, P, options, [&](post::ToothPairResult &tp) {
+      const int kp = ((tp.pinion_tooth % z[0]) + z[0]) % z[0], kg = ((tp.gear_tooth % z[1]) + z[1]) % z[1];
+      std::tie(tp.root_stress_pinion, tp.root_radius_pinion) = root_stress(0, kp, cs.universe_forces[0]);
+      std::tie(tp.root_stress_gear, tp.root_radius_gear)     = root_stress(1, kg, cs.universe_forces[1]);
+    });
+    // Moments of the nodal forces about each body's centre (body frame, centre at the origin),
+    // as fem::ElasticBody::moment; the bore reaction balances the applied moment exactly
+    // (discrete equilibrium of the clamped body), so it is the same number here.
+    double m[2] = {0, 0};
+    for (int b = 0; b < 2; ++b)
+      for (const auto &[u, v] : cs.universe_forces[b])
+        m[b] += cycle_.body[b].component[u] == 0 ? -cycle_.body[b].y[u] * v : cycle_.body[b].x[u] * v;
+    r.result.torque_contact  = -m[0];
+    r.result.torque_reaction = -m[0];
+    r.result.torque_gear     = std::abs(m[1]);
+    r.result.t_post          = since(t1);
+    return r;
+  }
+
+  solve::SolveRunResult run_condensed(const CondensedCycle &cycle, const solve::GearContactInput &in,
+                                      const solve::SolveRunOptions &options)
+  {
+    post::validate(options.post);
+    const Resolver resolver(cycle, in);
+    solve::SolveRunResult run;
+    io::SolveResults &t = run.results;
+    t                   = solve::start_results(in, options.input_name, "gearfem solve --condensed");
+    const auto positions    = in.positions();
+    const auto &torques     = in.solve.torques;
+    const double z_ratio    = double(in.pair->gear(2).teeth()) / in.pair->gear(1).teeth();
+    const double face_width = std::min(in.material[0].thickness, in.material[1].thickness);
+    const std::size_t total = positions.size() * torques.size();
+    Progress progress(options.out, total, "position");
+    double t_contact = 0, t_post = 0;
+    const auto t_start = Clock::now();
+    for (std::size_t i = 0; i < total && run.failure.empty(); ++i)
+      {
+        const std::size_t ti = i / positions.size(), pi = i % positions.size();
+        try
+          {
+            const Resolved r = resolver.solve(resolver.positions()[pi], torques[ti], options.post);
+            solve::append_position(t, r.state, r.result, positions[pi].first, int(pi), z_ratio, face_width);
+            t_contact += r.state.t_contact, t_post += r.result.t_post;
+            ++run.solved;
+            // Progress only every tenth of the run: a line per millisecond position would
+            // cost more than the solve.
+            if (options.out && ((i + 1) % std::max<std::size_t>(1, total / 10) == 0 || i + 1 == total))
+              {
+                std::ostringstream d;
+                d << "T " << torques[ti] << " N m, STE " << std::setprecision(4) << r.result.ste * 1e6 << " um";
+                progress.step(i + 1, d.str());
+              }
+          }
+        catch (const SolverError &e)
+          {
+            run.failure = e.what();
+          }
+      }
+    run.unresolved = solve::count_unresolved(t, options.post.unresolved_share);
+    const auto t_out = Clock::now();
+    io::write_solve_results(t, options.output_dir);
+    run.seconds = {{"contact", t_contact}, {"post", t_post}, {"output", since(t_out)},
+                   {"total", since(t_start)}};
+    return run;
+  }
+} // namespace gearfem::condensed

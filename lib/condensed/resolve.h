@@ -1,0 +1,62 @@
+#pragma once
+// Re-solving on a condensed cycle (condensed/cycle.h): any torque list and any gap-route
+// micro-geometry of a design whose meshed geometry, mesh, material and contact options are
+// those of the cycle. Each position is a dense complementarity problem on the stored
+// candidates (contact::solve_condensed); the evaluation is post's, with the root stress from
+// the stored influence coefficients instead of a displacement field. The run writes the same
+// sweep.csv, pairs.csv, pressure.csv, line_of_action.csv and results.h5 as `gearfem solve`
+// (no VTU: the condensed route keeps no field).
+#include "condensed/cycle.h"
+#include "post/position.h"
+#include "solve/run.h"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace gearfem::condensed
+{
+  /// One re-solved position.
+  struct Resolved
+  {
+    contact::ContactState state;
+    post::PositionResult result;
+  };
+
+  class Resolver
+  {
+  public:
+    /// Checks that `variant` can be re-solved on `cycle` (InputError naming what differs:
+    /// the model key, a position the cycle does not hold, a relief meshed as geometry). Both
+    /// must outlive the resolver.
+    Resolver(const CondensedCycle &cycle, const solve::GearContactInput &variant);
+    /// Index in the cycle of each position of the variant's `Solve` section.
+    const std::vector<std::size_t> &positions() const { return index_; }
+    /// Gap offsets of the variant's micro-geometry at the candidates of stored configuration
+    /// `p` [m] (of the first scene of position k).
+    Eigen::VectorXd offsets(const contact::CondensedPosition &p) const;
+    Eigen::VectorXd offsets(std::size_t k) const;
+    /// Re-solve cycle position k at pinion torque T1 [N m] (> 0) and evaluate it. SolverError
+    /// when the complementarity problem fails or the contact leaves the stored candidates.
+    Resolved solve(std::size_t k, double torque, const post::PostOptions &options) const;
+    /// The same with given offsets at the candidates of cycle.at(k, torque) (e.g. a
+    /// manufacturing deviation on top of the relief).
+    Resolved solve(std::size_t k, double torque, const Eigen::VectorXd &offsets,
+                   const post::PostOptions &options) const;
+
+  private:
+    /// Peak fillet sigma_1 of tooth `tooth` of body b under universe forces f: (value, radius).
+    std::pair<double, double> root_stress(int b, int tooth, const std::vector<std::pair<int, double>> &f) const;
+    const CondensedCycle &cycle_;
+    const solve::GearContactInput &in_;
+    std::vector<std::size_t> index_;
+    std::vector<int> column_[2]; ///< universe index -> column of the stress influence (-1)
+    fem::Elasticity material_[2];
+  };
+
+  /// The `solve` run of `variant` on `cycle`: every torque x position, evaluated, with
+  /// progress, written to options.output_dir like solve::run_solve (also after a failure,
+  /// with the finished positions). No journal: a condensed run takes milliseconds.
+  solve::SolveRunResult run_condensed(const CondensedCycle &cycle, const solve::GearContactInput &variant,
+                                      const solve::SolveRunOptions &options);
+} // namespace gearfem::condensed

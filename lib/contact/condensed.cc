@@ -1,0 +1,115 @@
+// solve_condensed: a re-solve of one stored configuration (contact/condensed.h).
+#include "contact/condensed.h"
+#include "contact/ncp.h"
+
+#include "base/errors.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace gearfem::contact
+{
+  namespace
+  {
+    Vec2 rotate_about(const Vec2 &x, const Vec2 &c, double angle)
+    {
+      const double cs = std::cos(angle), sn = std::sin(angle);
+      const Vec2 d    = x - c;
+      return c + Vec2(cs * d.x() - sn * d.y(), sn * d.x() + cs * d.y());
+    }
+  } // namespace
+
+  CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset, double load,
+                                    double tolerance, int max_active_set_iterations)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int m   = int(c.size());
+    if (m == 0)
+      throw SolverError("no contact found: the stored configuration has no candidate slave node");
+    if (offset.size() != 0 && offset.size() != m)
+      throw SolverError("condensed re-solve: " + std::to_string(offset.size()) + " gap offsets for " +
+                        std::to_string(m) + " candidates");
+    const Eigen::VectorXd o = offset.size() ? offset : Eigen::VectorXd::Zero(m);
+    // Secant start along the build solve's load path.
+    double q = c.load_build > 0 ? c.q_build * load / c.load_build : c.q_build;
+    Eigen::VectorXd lambda0 = Eigen::VectorXd::Zero(m);
+    NcpResult ncp;
+    std::vector<char> prev_active;
+    int iterations = 0;
+    bool settled   = false;
+    Eigen::VectorXd arm(m), ghat(m);
+    for (int it = 0; it < 30 && !settled; ++it)
+      {
+        // Linearise the curvature term about q: h(q') = h(q) + a(q) (q' - q).
+        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q - c.q_build);
+        arm  = c.a + c.curvature.cwiseProduct(dq);
+        ghat = c.ghat + o + c.a * q + 0.5 * c.curvature.cwiseProduct(dq.cwiseProduct(dq)) - arm * q;
+        ncp  = solve_ncp(c.W, c.D, arm, ghat, Control::load, load, q, lambda0, max_active_set_iterations);
+        iterations += ncp.iterations;
+        if (!ncp.ok)
+          throw SolverError("condensed re-solve: " + ncp.why);
+        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
+        settled = it > 0 && ncp.active == prev_active &&
+                  std::abs(ncp.q - q) <= tolerance * std::abs(ncp.q) + q_floor;
+        prev_active = ncp.active;
+        lambda0     = ncp.lambda;
+        q           = ncp.q;
+      }
+    if (!settled)
+      throw SolverError("condensed re-solve: the rotation did not settle in 30 curvature updates");
+    for (int k = 0; k < m; ++k)
+      if (c.cand[k].edge && ncp.lambda[k] > 0)
+        throw SolverError("condensed re-solve: the contact reaches the edge of the stored candidates (slave node " +
+                          std::to_string(c.cand[k].point.node) + " of body " +
+                          std::to_string(c.cand[k].point.slave_body) +
+                          "): the condensed cycle does not cover this load or modification; build it at a "
+                          "higher torque or with a larger Contact/Search distance");
+
+    CondensedSolution out;
+    ContactSolution &s = out.solution;
+    s.converged             = true;
+    s.q                     = q;
+    s.load                  = -arm.dot(ncp.lambda);
+    s.tangent               = ncp.tangent;
+    s.complementarity       = ncp.complementarity;
+    s.active_set_iterations = iterations;
+    s.geometry_iterations   = 1;
+    const Vec2 o1           = c.placement[0].centre;
+    for (int k = 0; k < m; ++k)
+      {
+        ContactPoint p = c.cand[k].point;
+        p.force        = ncp.lambda[k];
+        p.gap          = ncp.gap[k];
+        p.arm          = arm[k];
+        p.pressure     = 0;
+        for (const auto &[j, coef] : c.pressure[k])
+          p.pressure += coef * ncp.lambda[j];
+        // Body 1 turns with q: its points follow the rotation from the build state.
+        const double dq = q - c.q_build;
+        if (p.slave_body == 1)
+          p.x = rotate_about(p.x, o1, dq);
+        else
+          {
+            p.master_point = rotate_about(p.master_point, o1, dq);
+            p.normal       = rotate_about(p.normal, Vec2::Zero(), dq);
+          }
+        s.max_penetration = std::max(s.max_penetration, -p.gap);
+        if (ncp.active[k])
+          ++s.n_active;
+        s.points.push_back(p);
+      }
+    for (int b = 0; b < 2; ++b)
+      {
+        std::map<int, double> f;
+        for (int k = 0; k < m; ++k)
+          if (ncp.lambda[k] != 0)
+            for (const auto &[i, v] : c.B[b][k])
+              f[i] += ncp.lambda[k] * v;
+        out.universe_forces[b].assign(f.begin(), f.end());
+      }
+    s.t_solve = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  }
+} // namespace gearfem::contact
