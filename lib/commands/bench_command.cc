@@ -9,6 +9,7 @@
 #include "dynamics/benchmark.h"
 #include "fem/benchmark.h"
 #include "solve/benchmark.h"
+#include "condensed/benchmark.h"
 
 #include <filesystem>
 #include <ostream>
@@ -20,12 +21,13 @@ namespace gearfem::commands
   {
     Command c;
     c.name        = "bench";
-    c.summary     = "benchmarks that print timings and errors (analytical | dynamics | fem | solve)";
+    c.summary     = "benchmarks that print timings and errors (analytical | dynamics | fem | solve | condensed)";
     c.description = "Sample runs:\n"
                     "  gearfem bench analytical\n"
                     "  gearfem bench dynamics\n"
                     "  gearfem bench fem inputs/demo.prm\n"
                     "  gearfem bench solve inputs/demo.prm\n"
+                    "  gearfem bench condensed inputs/demo.prm\n"
                     "Figures are printed; validation/RESULTS.md records them with the command.";
     c.needs_input = false;
     c.parse_input = false;
@@ -60,8 +62,15 @@ namespace gearfem::commands
           if (!ctx.validate_only)
             solve::benchmark(file, *ctx.out);
         }
+      else if (what == "condensed")
+        {
+          const auto file = input_file();
+          if (!ctx.validate_only)
+            condensed::benchmark(file, *ctx.out);
+        }
       else
-        throw InputError("bench target", what.empty() ? "(none)" : what, "{ analytical dynamics fem solve }");
+        throw InputError("bench target", what.empty() ? "(none)" : what,
+                         "{ analytical dynamics fem solve condensed }");
     };
     return c;
   }

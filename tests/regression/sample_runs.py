@@ -21,7 +21,9 @@ gearfem, src = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 # clean clone the prerequisite is absent, and the sample must then fail exactly on it (exit
 # 2 naming the entry and "file not found"), not on anything else.
 NEEDS = {'calibrate validation/analytical_vs_fe/calibrate.prm':
-         ('validation/parker_ste/results/plane_stress/results.h5', 'Calibration/Results files')}
+         ('validation/parker_ste/results/plane_stress/results.h5', 'Calibration/Results files'),
+         'solve inputs/demo.prm --condensed results/demo_condensed/condensed.h5':
+         ('results/demo_condensed/condensed.h5', 'condensed cycle file')}
 CHEAP = {'profile inputs/demo.prm', 'rate inputs/seed001_23_69_rate.prm', 'gearbox inputs/seed001_gearbox.prm',
          'gearbox inputs/seed001_gearbox_thesis_stresses.prm', 'profile inputs/fzg_c.prm',
          'dynamics inputs/dynamics_seed004.prm', 'mesh inputs/mesh_demo.prm'}
