@@ -9,11 +9,15 @@
 #include "io/solve_results.h"
 #include "post/parameters.h"
 #include "solve/run.h"
+#include "condensed/cycle.h"
+#include "condensed/resolve.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <chrono>
+#include <cmath>
+#include <map>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -80,7 +84,7 @@ namespace gearfem::batch
     std::ostringstream s;
     s << "gearfem-batch-job 1\nid " << r.id << "\nkey " << r.key << "\nstatus " << r.status << "\nmessage "
       << one_line(r.message) << "\nwall_time " << exact(r.wall_time) << "\ncontact_ratio " << exact(r.contact_ratio)
-      << "\nshared_model " << (r.shared_model ? 1 : 0) << "\ntorques";
+      << "\nshared_model " << (r.shared_model ? 1 : 0) << "\nroute " << r.route << "\ntorques";
     for (const double t : r.torques)
       s << " " << exact(t);
     s << "\nend\n";
@@ -116,6 +120,8 @@ namespace gearfem::batch
           r.contact_ratio = std::strtod(value.c_str(), nullptr);
         else if (name == "shared_model")
           r.shared_model = value == "1";
+        else if (name == "route")
+          r.route = value;
         else if (name == "torques")
           {
             std::istringstream v(value);
@@ -150,6 +156,11 @@ namespace gearfem::batch
     std::unique_ptr<solve::GearContactInput> base, current;
     std::unique_ptr<contact::GearContactModel> model;
     std::size_t builds = 0, reuses = 0;
+    /// The condensed cycle of the cached model (Batch/Condensed cycle), and the torques of
+    /// every design of the study by model key (scanned once).
+    std::unique_ptr<condensed::CondensedCycle> cycle;
+    std::map<std::string, std::vector<double>> key_torques;
+    bool scanned = false;
   };
 
   ModelCache::ModelCache()
@@ -187,6 +198,7 @@ namespace gearfem::batch
           return *c.model;
         }
       c.model.reset(); // free the old factorisation before the new one is built
+      c.cycle.reset();
       c.key.clear();
       c.current.reset();
       c.base  = std::move(in);
@@ -237,6 +249,75 @@ namespace gearfem::batch
     return rec;
   }
 
+  namespace
+  {
+    /// The job on the rank's condensed cycle when Batch/Condensed cycle = auto and the
+    /// designs of its model key ask for at least 3 torque sweeps (the cycle is built once, at
+    /// the geometric mean of their torques, for their torque range). Returns false (and runs
+    /// nothing, or leaves a note in `note`) when the full solve should run instead.
+    bool run_condensed_job(const Study &study, ModelCache *cache, const std::string &key,
+                           std::unique_ptr<solve::GearContactInput> &input, const solve::SolveRunOptions &opt,
+                           JobRecord &rec, std::string &note)
+    {
+      const solve::GearContactInput &in = *input;
+      if (!cache || !study.batch.condensed || opt.resume)
+        return false;
+      try
+        {
+          condensed::check_condensable(in);
+        }
+      catch (const InputError &)
+        {
+          return false;
+        }
+      auto &c = cache->impl();
+      if (!c.scanned)
+        {
+          for (std::size_t j = 0; j < study.designs.designs.size(); ++j)
+            try
+              {
+                auto prm = design_handler(study, j);
+                auto &t  = c.key_torques[solve::model_key(solve::parse_gear_contact_input(*prm))];
+                for (const double T : design_torques(*prm))
+                  t.push_back(T);
+              }
+            catch (const std::exception &)
+              {} // an invalid design is recorded by its own job
+          c.scanned = true;
+        }
+      const auto &Ts = c.key_torques[key];
+      if (Ts.size() < 3)
+        return false;
+      const double lo = *std::min_element(Ts.begin(), Ts.end()), hi = *std::max_element(Ts.begin(), Ts.end());
+      const solve::GearContactInput *kept = input.get();
+      std::unique_ptr<contact::GearContactModel> own;
+      auto &model = job_model(cache, key, input, own, rec.shared_model);
+      if (!c.cycle || c.cycle->key != condensed::condensed_key(*kept))
+        {
+          c.cycle.reset();
+          c.cycle = std::make_unique<condensed::CondensedCycle>(
+            condensed::build_cycle(model, *kept, std::sqrt(lo * hi), lo, hi));
+        }
+      try
+        {
+          const solve::SolveRunResult r = condensed::run_condensed(*c.cycle, *kept, opt);
+          if (!r.failure.empty())
+            {
+              note = "condensed route failed (" + r.failure + "), solved in full";
+              return false;
+            }
+        }
+      catch (const InputError &e)
+        {
+          note = std::string("condensed cycle not usable (") + e.what() + "), solved in full";
+          return false;
+        }
+      rec.route  = "condensed";
+      rec.status = "ok";
+      return true;
+    }
+  } // namespace
+
   JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root, ModelCache *cache)
   {
     const auto t0  = std::chrono::steady_clock::now();
@@ -263,14 +344,21 @@ namespace gearfem::batch
         opt.input_hash    = rec.key;
         opt.input_name    = job_parameters_file;
         opt.resume        = journal_matches(dir, rec.key);
-        std::unique_ptr<contact::GearContactModel> own;
-        auto &model = job_model(cache, solve::model_key(in), input, own, rec.shared_model);
-        const solve::SolveRunResult r = solve::run_solve(model, in, opt);
-        if (r.failure.empty())
-          rec.status = "ok";
-        else
-          rec.message = "solver failure: " + r.failure + " (" + std::to_string(r.results.sweep.n_rows()) +
-                        " positions finished, kept in results.h5)";
+        const std::string key = solve::model_key(in);
+        std::string note;
+        if (!run_condensed_job(study, cache, key, input, opt, rec, note))
+          {
+            std::unique_ptr<contact::GearContactModel> own;
+            // The condensed attempt may have handed the input to the cache already: its model
+            // is then this design's.
+            auto &model = input ? job_model(cache, key, input, own, rec.shared_model) : *cache->impl().model;
+            const solve::SolveRunResult r = solve::run_solve(model, in, opt);
+            if (r.failure.empty())
+              rec.status = "ok", rec.message = note;
+            else
+              rec.message = "solver failure: " + r.failure + " (" + std::to_string(r.results.sweep.n_rows()) +
+                            " positions finished, kept in results.h5)";
+          }
       }
     catch (const InputError &e)
       {

@@ -34,6 +34,8 @@ namespace gearfem::batch
     /// The job re-used the factorised model of an earlier job of its rank (ModelCache): its
     /// wall time has no mesh and factorisation in it.
     bool shared_model = false;
+    /// "full" (solve::run_solve) or "condensed" (condensed::run_condensed on the rank's cycle).
+    std::string route = "full";
     bool ok() const { return status == "ok"; }
   };
 

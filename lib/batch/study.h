@@ -37,6 +37,10 @@ namespace gearfem::batch
     int samples        = 10;
     unsigned long seed = 1;
     bool write_vtu     = false; ///< per-job VTU as in `Solve/VTU`; false: none
+    /// `Condensed cycle = auto`: designs that share one FE model (same model key, reliefs on
+    /// the gap route) and together ask for at least 3 torque sweeps are re-solved on one
+    /// condensed cycle per rank (condensed/cycle.h) instead of a full solve each.
+    bool condensed = true;
   };
 
   void declare_batch_parameters(dealii::ParameterHandler &prm);

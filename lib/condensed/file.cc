@@ -18,8 +18,8 @@ namespace gearfem::condensed
     /// Columns of the candidate table, in order.
     constexpr const char *candidate_columns =
       "slave_body node slave_tooth master_tooth master_piece master_t slave_code master_code master_corner "
-      "x y master_x master_y normal_x normal_y gap force pressure weight arm edge";
-    constexpr int n_candidate_columns = 21;
+      "x y master_x master_y normal_x normal_y gap force pressure weight arm edge smooth";
+    constexpr int n_candidate_columns = 22;
 
     std::string position_group(std::size_t k)
     {
@@ -95,6 +95,7 @@ namespace gearfem::condensed
       w.double_attribute(g.get(), "load_build", p.load_build);
       w.double_attribute(g.get(), "load_lo", p.load_lo);
       w.double_attribute(g.get(), "load_hi", p.load_hi);
+      w.double_attribute(g.get(), "search_distance", p.search_distance);
       const hsize_t m = p.size();
       w.dataset(g.get(), "placement", {2, 3},
                 {p.placement[0].centre.x(), p.placement[0].centre.y(), p.placement[0].angle,
@@ -120,7 +121,7 @@ namespace gearfem::condensed
                                      double(q.master_tooth), double(q.master_piece), q.master_t,
                                      double(q.slave_code), double(q.master_code), double(q.master_corner), q.x.x(),
                                      q.x.y(), q.master_point.x(), q.master_point.y(), q.normal.x(), q.normal.y(),
-                                     q.gap, q.force, q.pressure, q.weight, q.arm, double(c.edge)});
+                                     q.gap, q.force, q.pressure, q.weight, q.arm, double(c.edge), double(c.smooth)});
         }
       w.dataset(g.get(), "candidates", {m, hsize_t(n_candidate_columns)}, table, "SI", candidate_columns);
       using IV = std::pair<int, double>;

@@ -148,6 +148,7 @@ namespace gearfem::condensed
       p.load_build = r.double_attribute(g.get(), g.path(), "load_build", "N m");
       p.load_lo    = r.double_attribute(g.get(), g.path(), "load_lo", "N m");
       p.load_hi    = r.double_attribute(g.get(), g.path(), "load_hi", "N m");
+      p.search_distance = r.double_attribute(g.get(), g.path(), "search_distance", "m");
       const auto pl = g.mat("placement", 2, 3);
       for (int b = 0; b < 2; ++b)
         p.placement[b] = {contact::Vec2(pl[3 * b], pl[3 * b + 1]), pl[3 * b + 2]};
@@ -162,11 +163,11 @@ namespace gearfem::condensed
         return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(m)));
       };
       p.a = ev("a"), p.ghat = ev("ghat"), p.curvature = ev("curvature"), p.D = ev("D");
-      const auto t = g.mat("candidates", m, 21);
+      const auto t = g.mat("candidates", m, 22);
       p.cand.resize(m);
       for (std::size_t k = 0; k < m; ++k)
         {
-          const double *c = t.data() + 21 * k;
+          const double *c = t.data() + 22 * k;
           auto &q         = p.cand[k].point;
           if (!(c[0] == 1 || c[0] == 2))
             r.fail(g.path() + "/candidates", "", "slave body " + to_string_g(c[0]), "1 | 2");
@@ -176,7 +177,7 @@ namespace gearfem::condensed
           q.x = contact::Vec2(c[9], c[10]), q.master_point = contact::Vec2(c[11], c[12]);
           q.normal = contact::Vec2(c[13], c[14]);
           q.gap = c[15], q.force = c[16], q.pressure = c[17], q.weight = c[18], q.arm = c[19];
-          p.cand[k].edge = c[20] != 0;
+          p.cand[k].edge = c[20] != 0, p.cand[k].smooth = c[21] != 0;
         }
       p.B[0]     = index_value(g, "B1", m, universe[0]);
       p.B[1]     = index_value(g, "B2", m, universe[1]);

@@ -42,6 +42,7 @@ namespace gearfem::contact
 
     CondensedPosition out;
     out.q_build    = q;
+    out.search_distance = options_.search_distance;
     out.load_build = solution.load;
     out.placement[0] = scene.placement[0], out.placement[1] = scene.placement[1];
     out.W = lin.W, out.a = lin.a, out.D = lin.D;
@@ -53,6 +54,7 @@ namespace gearfem::contact
     out.curvature = Eigen::VectorXd::Zero(m);
     const double h = std::max(0.5 * std::abs(q), 1e-7);
     std::map<int, double> g_plus, g_minus;
+    std::vector<char> smooth(m, 1);
     for (const auto &c : search(scene, q + h).cand)
       g_plus[key(c.S, c.node)] = c.g;
     for (const auto &c : search(scene, q - h).cand)
@@ -63,6 +65,12 @@ namespace gearfem::contact
         const auto p = g_plus.find(kk), n = g_minus.find(kk);
         if (p != g_plus.end() && n != g_minus.end())
           out.curvature[k] = (p->second - 2 * sr.cand[k].g + n->second) / (h * h);
+        else
+          smooth[k] = false;
+        if (std::abs(out.curvature[k] * h) > 0.1 * std::abs(lin.a[k]))
+          smooth[k] = false;
+        if (!smooth[k])
+          out.curvature[k] = 0;
       }
 
     // Where the gap modifications enter each gap, and the unmodified gap.
@@ -97,7 +105,7 @@ namespace gearfem::contact
     fill_solution(filled, sr.cand, lin, lambda, gap, scene, q);
     out.cand.resize(m);
     for (int k = 0; k < m; ++k)
-      out.cand[k].point = filled.points[k];
+      out.cand[k].point = filled.points[k], out.cand[k].smooth = smooth[k];
 
     // Edges of the stored set: a candidate next to a slave node of the scene that is not a
     // candidate.

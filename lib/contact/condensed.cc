@@ -59,12 +59,27 @@ namespace gearfem::contact
       }
     if (!settled)
       throw SolverError("condensed re-solve: the rotation did not settle in 30 curvature updates");
+    // The approach of each edge candidate beyond its build state (unmodified geometry).
+    Eigen::VectorXd lambda_b(m);
     for (int k = 0; k < m; ++k)
-      if (c.cand[k].edge && ncp.lambda[k] > 0)
+      lambda_b[k] = c.cand[k].point.force;
+    const double dq = q - c.q_build;
+    const Eigen::VectorXd approach =
+      -(c.a * dq + 0.5 * c.curvature * dq * dq + c.W * (ncp.lambda - lambda_b));
+    for (int k = 0; k < m; ++k)
+      if (!c.cand[k].smooth && ncp.lambda[k] > 0 && std::abs(dq) > 1e-3 * std::abs(c.q_build))
+        throw SolverError("condensed re-solve: stored candidate slave node " + std::to_string(c.cand[k].point.node) +
+                          " of body " + std::to_string(c.cand[k].point.slave_body) +
+                          ", whose gap is not smooth in the rotation (its closest point jumps), carries load away "
+                          "from the build torque: build the condensed cycle nearer this load");
+    for (int k = 0; k < m; ++k)
+      if (c.cand[k].edge && approach[k] > 0.5 * c.search_distance)
         throw SolverError("condensed re-solve: the contact reaches the edge of the stored candidates (slave node " +
                           std::to_string(c.cand[k].point.node) + " of body " +
-                          std::to_string(c.cand[k].point.slave_body) +
-                          "): the condensed cycle does not cover this load or modification; build it at a "
+                          std::to_string(c.cand[k].point.slave_body) + " approaches the mating flank by " +
+                          to_string_g(approach[k] * 1e6) + " um more than at the build, over half the search distance " +
+                          to_string_g(c.search_distance * 1e6) +
+                          " um): the condensed cycle does not cover this load or modification; build it at a "
                           "higher torque or with a larger Contact/Search distance");
 
     CondensedSolution out;

@@ -39,9 +39,16 @@ namespace gearfem::contact
   struct CondensedCandidate
   {
     ContactPoint point; ///< force, gap and pressure of the build solve
-    /// A slave neighbour of this node along the surface was not a candidate: if this node
-    /// carries load in a re-solve, contact may extend beyond the stored set.
+    /// A slave neighbour of this node along the surface was not a candidate (it lay farther
+    /// than the search distance from the mating body at the build state): if this node
+    /// approaches the mating body by half the search distance more than at the build, that
+    /// neighbour may come into contact, and the stored set no longer covers the contact.
     bool edge = false;
+    /// The gap is smooth in q: the central difference of the curvature agrees with the arm
+    /// (the slope changes by less than 10 % over the difference step). Not smooth (the
+    /// closest point jumps between pieces, at a corner or far from contact): its curvature is
+    /// stored as 0, and a re-solve at another load in which it carries load fails.
+    bool smooth = true;
   };
 
   struct CondensedPosition
@@ -51,6 +58,7 @@ namespace gearfem::contact
     /// The loads [N m or N] over which this configuration's scene (which body is the slave
     /// of each tooth pair, contact/gear_contact.h) is the one the full solver takes.
     double load_lo = 0, load_hi = 0;
+    double search_distance = 0; ///< ContactOptions::search_distance of the build [m]
     geometry::Placement placement[2]; ///< rigid placements at q = 0 (Scene::placement)
     std::vector<CondensedCandidate> cand;
     Eigen::MatrixXd W;       ///< Delassus operator [m/N], symmetric
@@ -80,7 +88,8 @@ namespace gearfem::contact
   /// modifications `offset` (one per candidate, o_k [m]; empty: none). Newton on q over the
   /// curvature term, the complementarity problem of contact/ncp.h at each step; converges
   /// to `tolerance` in q. Throws SolverError when it does not converge, when nothing carries
-  /// the load, and when an edge candidate is loaded (the stored candidates do not cover the
+  /// the load, and when an edge candidate has approached the mating body by more than half
+  /// the search distance beyond its build state (the stored candidates may not cover the
   /// contact: rebuild the cycle at this load or with a larger search distance).
   CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset, double load,
                                     double tolerance = 1e-10, int max_active_set_iterations = 60);
