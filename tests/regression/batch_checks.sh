@@ -16,6 +16,10 @@
 #                                            only in tip relief share one factorised model (job.txt
 #                                            shared_model), and each job's sweep equals `gearfem
 #                                            solve` of its design.prm (a fresh model) to 1e-10
+#                                            (Batch/Condensed cycle = off); with the default (auto)
+#                                            the three sharing designs run on one condensed cycle
+#                                            (job.txt route) within 0.1 % STE and 0.5 % root
+#                                            stress of those fresh solves
 #   batch_checks.sh bad     GEARFEM SRC_DIR  unknown parameter path, malformed row, value that
 #                                            is not a number: exit 2 naming column and row,
 #                                            before any job (no jobs folder), also under mpirun
@@ -209,6 +213,8 @@ PY
   shared)
     study relief_designs.csv
     printf 'subsection Contact\n  set Micro-geometry = gap\nend\n' >> "$work/study.prm"
+    cp "$work/study.prm" "$work/study_auto.prm"
+    printf 'subsection Batch\n  set Condensed cycle = off\nend\n' >> "$work/study.prm"
     "$gearfem" batch "$work/study.prm" --output-dir "$work/out" > "$work/log" 2>&1 ||
       { cat "$work/log"; fail "gap-route batch failed"; }
     cat "$work/log"
@@ -241,6 +247,31 @@ for j in ("none", "short", "long", "soft"):
 assert max(abs(u - v) for u, v in zip(ste["none"], ste["long"])) > 0.1, (ste["none"], ste["long"])
 assert sum(ste["long"]) >= sum(ste["short"]) >= sum(ste["none"]), ste
 print("re-used models: short and long equal fresh solves of their design.prm to 1e-10")
+PY
+    # The default route: none, short and long share a model and ask for 6 torque sweeps, so
+    # they run on one condensed cycle; soft has its own model and 2 sweeps: a full solve.
+    "$gearfem" batch "$work/study_auto.prm" --output-dir "$work/auto" > "$work/auto.log" 2>&1 ||
+      { cat "$work/auto.log"; fail "gap-route batch with the condensed cycle failed"; }
+    for j in none short long; do grep -q "^route condensed" "$work/auto/jobs/$j/job.txt" || fail "$j did not run on the condensed cycle"; done
+    grep -q "^route full" "$work/auto/jobs/soft/job.txt" || fail "soft (its own model, 2 sweeps) did not run in full"
+    /usr/bin/python3 - "$work" <<'PY' || fail "a job on the condensed cycle is off the fresh solve"
+import csv, sys
+w = sys.argv[1]
+def rows(path):
+    r = list(csv.reader(open(path)))
+    return r[0], r[1:]
+worst = {}
+for j in ("none", "short", "long", "soft"):
+    h, a = rows(f"{w}/auto/jobs/{j}/sweep.csv")
+    h2, b = rows(f"{w}/solo_{j}/sweep.csv")
+    assert h == h2 and len(a) == len(b) == 10, (j, len(a), len(b))
+    for name, tol in (("STE [um]", 1e-3), ("root stress pinion [MPa]", 5e-3), ("root stress gear [MPa]", 5e-3)):
+        i = h.index(name)
+        for x, y in zip(a, b):
+            d = abs(float(x[i]) - float(y[i])) / abs(float(y[i]))
+            worst[name] = max(worst.get(name, 0), d)
+            assert d <= tol, (j, name, x[i], y[i])
+print("condensed cycle: worst relative differences from fresh solves", worst)
 PY
     ;;
   bad)
