@@ -6,6 +6,8 @@
 #include "commands/command.h"
 #include "condensed/cycle.h"
 #include "condensed/parameters.h"
+#include "condensed/table.h"
+#include "io/mesh_table_io.h"
 #include "post/parameters.h"
 #include "solve/input.h"
 
@@ -55,6 +57,19 @@ namespace gearfem::commands
       for (const auto &ps : c.cycle)
         for (const auto &p : ps)
           m = std::max(m, p.size()), ++scenes;
+      if (!cp.table_file.empty())
+        {
+          condensed::TableOptions to;
+          to.n_delta  = cp.table_compressions;
+          to.backlash = cp.backlash;
+          const io::MeshTable t = condensed::torque_table(c, *in.pair, to, &out);
+          io::TableProvenance prov;
+          prov.source = "gearfem condense (FE-exact contact solves on the condensed cycle of " + c.input_name + ")";
+          io::write_mesh_table(ctx.output_dir / cp.table_file, t, prov);
+          out << "wrote " << (ctx.output_dir / cp.table_file).string() << ": T(theta, delta) " << t.theta.size()
+              << " x " << t.second.size() << ", delta up to " << t.second.back() * 1e6 << " um"
+              << (t.two_sided() ? ", two-sided" : "") << ", geometry hash " << t.geometry_hash << "\n";
+        }
       out << "wrote " << file.string() << ": " << c.cycle.size() << " positions (" << scenes
           << " scenes), up to " << m << " candidates each; set-up " << c.setup_seconds << " s, build "
           << c.build_seconds << " s\n";

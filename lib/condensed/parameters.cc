@@ -5,6 +5,9 @@
 #include "params/checked.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
 
 namespace gearfem::condensed
 {
@@ -22,6 +25,18 @@ namespace gearfem::condensed
                       "this range (each solved at the build torque clamped into its own range), and refuses "
                       "torques outside it. Units: N m. Allowed: 0 < low <= build torque <= high; 0, 0 takes a "
                       "quarter of the smallest and twice the largest of Solve/Torques.");
+    prm.declare_entry("Table file", "", dealii::Patterns::Anything(),
+                      "Also write the FE-exact mesh torque table T(theta, delta) (docs/mesh-tables.md) to this file "
+                      "in the output folder: contact solves on the cycle under rotation control at each position "
+                      "(the theta axis: Solve/Positions must be one pitch of equally spaced roll angles) and "
+                      "compression, up to the compression every position reaches at the top of the torque range. "
+                      "Empty: no table. Units: none.");
+    prm.declare_entry("Table compressions", "60", dealii::Patterns::Integer(),
+                      "Compressions of the table's drive side, 0 included. Units: none. Allowed: >= 4.");
+    prm.declare_entry("Backlash", "-1", dealii::Patterns::Double(),
+                      "Total clearance b along the line of action of a two-sided table (format version 2: "
+                      "T = 0 on [-b, 0], the reverse flank below -b as the calibrated tables map it); < 0: a "
+                      "one-sided table. Units: um.");
     prm.leave_subsection();
   }
 
@@ -32,10 +47,20 @@ namespace gearfem::condensed
     p.build_torque = params::get_double(prm, "Build torque");
     const auto range = params::get_doubles(prm, "Torque range");
     p.torque_lo = range.at(0), p.torque_hi = range.at(1);
+    p.table_file         = dealii::Utilities::trim(prm.get("Table file"));
+    p.table_compressions = params::get_integer(prm, "Table compressions");
+    const double b_um    = params::get_double(prm, "Backlash");
+    p.backlash           = b_um >= 0 ? b_um * 1e-6 : -1.0;
     prm.leave_subsection();
     require_range("Condense/Build torque", p.build_torque, 0.0, 1e9, "N m");
     require_range("Condense/Torque range", p.torque_lo, 0.0, 1e9, "N m");
     require_range("Condense/Torque range", p.torque_hi, 0.0, 1e9, "N m");
+    if (p.table_compressions < 4)
+      throw InputError("Condense/Table compressions", std::to_string(p.table_compressions), ">= 4");
+    if (!std::isfinite(b_um) || b_um > 1e4)
+      throw InputError("Condense/Backlash", to_string_g(b_um), "< 0 (one-sided) or [0, 1e4] um");
+    if (p.table_file.find('/') != std::string::npos)
+      throw InputError("Condense/Table file", p.table_file, "a file name (written in the output folder)");
     return p;
   }
 } // namespace gearfem::condensed

@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 // ParameterHandler binding of the `Condense` section (gearfem condense).
 namespace dealii
 {
@@ -14,6 +15,11 @@ namespace gearfem::condensed
     /// Torques a re-solve may take [N m]; 0: a quarter of the smallest and twice the
     /// largest of Solve/Torques.
     double torque_lo = 0, torque_hi = 0;
+    /// FE-exact T(theta, delta) table (condensed/table.h) written to this file in the output
+    /// folder; empty: none.
+    std::string table_file;
+    int table_compressions = 60;
+    double backlash = -1; ///< [m]; < 0: a one-sided table
   };
   void declare_condense_parameters(dealii::ParameterHandler &prm);
   /// InputError naming "Condense/Build torque" for a negative or non-finite value.

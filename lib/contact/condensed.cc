@@ -21,9 +21,30 @@ namespace gearfem::contact
     }
   } // namespace
 
+  namespace
+  {
+    CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset, Control control,
+                                 double value, double tolerance, int max_active_set_iterations);
+  }
+
   CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset, double load,
                                     double tolerance, int max_active_set_iterations)
   {
+    return solve_impl(c, offset, Control::load, load, tolerance, max_active_set_iterations);
+  }
+
+  CondensedSolution solve_condensed_rotation(const CondensedPosition &c, const Eigen::VectorXd &offset, double q,
+                                             int max_active_set_iterations)
+  {
+    return solve_impl(c, offset, Control::displacement, q, 0.0, max_active_set_iterations);
+  }
+
+  namespace
+  {
+  CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset, Control control,
+                               double value, double tolerance, int max_active_set_iterations)
+  {
+    const double load = value;
     const auto t0 = std::chrono::steady_clock::now();
     const int m   = int(c.size());
     if (m == 0)
@@ -32,8 +53,9 @@ namespace gearfem::contact
       throw SolverError("condensed re-solve: " + std::to_string(offset.size()) + " gap offsets for " +
                         std::to_string(m) + " candidates");
     const Eigen::VectorXd o = offset.size() ? offset : Eigen::VectorXd::Zero(m);
-    // Secant start along the build solve's load path.
-    double q = c.load_build > 0 ? c.q_build * load / c.load_build : c.q_build;
+    // Secant start along the build solve's load path (or the given rotation).
+    double q = control == Control::displacement ? value :
+                                                  (c.load_build > 0 ? c.q_build * load / c.load_build : c.q_build);
     Eigen::VectorXd lambda0 = Eigen::VectorXd::Zero(m);
     NcpResult ncp;
     std::vector<char> prev_active;
@@ -46,13 +68,13 @@ namespace gearfem::contact
         const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q - c.q_build);
         arm  = c.a + c.curvature.cwiseProduct(dq);
         ghat = c.ghat + o + c.a * q + 0.5 * c.curvature.cwiseProduct(dq.cwiseProduct(dq)) - arm * q;
-        ncp  = solve_ncp(c.W, c.D, arm, ghat, Control::load, load, q, lambda0, max_active_set_iterations);
+        ncp  = solve_ncp(c.W, c.D, arm, ghat, control, value, q, lambda0, max_active_set_iterations);
         iterations += ncp.iterations;
         if (!ncp.ok)
           throw SolverError("condensed re-solve: " + ncp.why);
         constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
-        settled = it > 0 && ncp.active == prev_active &&
-                  std::abs(ncp.q - q) <= tolerance * std::abs(ncp.q) + q_floor;
+        settled = control == Control::displacement ||
+                  (it > 0 && ncp.active == prev_active && std::abs(ncp.q - q) <= tolerance * std::abs(ncp.q) + q_floor);
         prev_active = ncp.active;
         lambda0     = ncp.lambda;
         q           = ncp.q;
@@ -127,4 +149,5 @@ namespace gearfem::contact
     s.t_solve = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
   }
+  } // namespace
 } // namespace gearfem::contact

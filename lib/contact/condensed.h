@@ -93,4 +93,8 @@ namespace gearfem::contact
   /// contact: rebuild the cycle at this load or with a larger search distance).
   CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset, double load,
                                     double tolerance = 1e-10, int max_active_set_iterations = 60);
+  /// The same under rotation control: the drive coordinate q is given (>= 0); the load is
+  /// the result. One complementarity solve (the curvature term is exact at a given q).
+  CondensedSolution solve_condensed_rotation(const CondensedPosition &c, const Eigen::VectorXd &offset, double q,
+                                             int max_active_set_iterations = 60);
 } // namespace gearfem::contact

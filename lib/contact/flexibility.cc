@@ -62,7 +62,7 @@ namespace gearfem::contact
           {
             double v = 0;
             for (const auto &[k, coef] : c.observed_rows[r])
-              v += coef * x[n + k];
+              v += coef * x[k];
             F.S(r, missing[j]) = v;
           }
         F.have[missing[j]] = 1;
@@ -84,13 +84,20 @@ namespace gearfem::contact
     std::map<unsigned int, int> where;
     std::vector<unsigned int> support;
     std::vector<std::vector<std::pair<int, double>>> local(rows.size());
+    // Entries index the rows of a flexibility block: the universe first, then the DoFs of
+    // the functionals' support outside it (a DoF must not be requested twice).
     for (std::size_t r = 0; r < rows.size(); ++r)
       for (const auto &[d, v] : rows[r])
         {
+          if (c.index.at(d) >= 0)
+            {
+              local[r].emplace_back(c.index[d], v);
+              continue;
+            }
           auto it = where.find(d);
           if (it == where.end())
             {
-              it = where.emplace(d, int(support.size())).first;
+              it = where.emplace(d, int(c.dofs.size() + support.size())).first;
               support.push_back(d);
             }
           local[r].emplace_back(it->second, v);

@@ -230,7 +230,8 @@ namespace gearfem::contact
       std::vector<std::vector<int>> node_faces;   ///< surface faces around each node
       std::vector<char> kink;                     ///< node at a surface end or a normal jump (a corner)
       std::vector<unsigned int> observed_dofs;    ///< support of the observed functionals
-      /// Observed functionals: rows of (index into observed_dofs, coefficient).
+      /// Observed functionals: rows of (index into the universe followed by observed_dofs,
+      /// coefficient).
       std::vector<std::vector<std::pair<int, double>>> observed_rows;
     };
     ContactSolution solve_once(const Scene &scene, Control control, double value,

@@ -288,7 +288,12 @@ namespace gearfem::fem
     check(MatMumpsSetIcntl(F, 20, 0), "MatMumpsSetIcntl(20)");
     std::vector<int> where(std::size_t(n), -1);
     for (std::size_t i = 0; i < rows.size(); ++i)
-      where[rows[i]] = int(i);
+      {
+        if (where[rows[i]] >= 0)
+          throw SolverError("DirectSolver::inverse_entries: row " + std::to_string(rows[i]) +
+                            " requested twice (each row is filled once)");
+        where[rows[i]] = int(i);
+      }
     for (std::size_t j = 0; j < cols.size(); ++j)
       {
         PetscInt nc;
