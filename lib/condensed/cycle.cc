@@ -31,39 +31,6 @@ namespace gearfem::condensed
                        "mesh; a relief meshed as geometry is a different mesh");
   }
 
-  namespace
-  {
-    /// Fillet stress functionals of the fine teeth of gear i: the observed rows, and the
-    /// samples of each tooth.
-    std::vector<std::vector<std::pair<unsigned int, double>>> fillet_functionals(const contact::GearContactModel &model,
-                                                                                 int i, CycleBody &body)
-    {
-      std::vector<std::vector<std::pair<unsigned int, double>>> rows;
-      const int z = model.pair().gear(i).teeth();
-      std::set<int> teeth;
-      for (const int t : model.fine_teeth(i))
-        teeth.insert(((t % z) + z) % z);
-      namespace bd = mesh::boundary;
-      for (const int t : teeth)
-        {
-          auto f = model.body(i).boundary_stress_functionals(bd::tooth_id(t, bd::fillet_drive));
-          FilletSamples s;
-          s.tooth     = t;
-          s.first_row = int(rows.size());
-          for (const auto &sm : f.samples)
-            {
-              s.x.push_back(sm.stress.x[0]);
-              s.y.push_back(sm.stress.x[1]);
-              s.arc.push_back(sm.arc_length);
-            }
-          for (auto &r : f.rows)
-            rows.push_back(std::move(r));
-          body.fillets.push_back(std::move(s));
-        }
-      return rows;
-    }
-  } // namespace
-
   const contact::CondensedPosition &CondensedCycle::at(std::size_t k, double torque) const
   {
     const auto &scenes = cycle.at(k);
@@ -136,10 +103,18 @@ namespace gearfem::condensed
     c.setup_seconds = model.setup_seconds();
     c.dofs          = int(model.n_dofs());
     auto &solver    = model.contact_solver();
+    model.observe_root_stress();
     for (int i = 1; i <= 2; ++i)
       {
         c.body[i - 1].teeth = model.pair().gear(i).teeth();
-        solver.observe(i, fillet_functionals(model, i, c.body[i - 1]));
+        for (const auto &o : model.fillets(i))
+          {
+            FilletSamples fs;
+            fs.tooth = o.tooth, fs.first_row = o.first_row, fs.arc = o.arc;
+            for (const auto &x : o.x)
+              fs.x.push_back(x.x()), fs.y.push_back(x.y());
+            c.body[i - 1].fillets.push_back(std::move(fs));
+          }
       }
 
     Progress progress(out, c.positions.size(), "condense position");

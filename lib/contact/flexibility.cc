@@ -70,6 +70,23 @@ namespace gearfem::contact
     seconds += since(t0);
   }
 
+  Eigen::VectorXd TwoBodyContact::observed_response(int body,
+                                                    const std::vector<std::pair<unsigned int, double>> &forces) const
+  {
+    const auto &c = cache_[body - 1];
+    const auto &F = *c.flex;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(F.S.rows());
+    for (const auto &[d, f] : forces)
+      {
+        const int i = d < c.index.size() ? c.index[d] : -1;
+        if (i < 0 || F.have[i] != 1)
+          throw SolverError("observed response: a force at DoF " + std::to_string(d) + " of body " +
+                            std::to_string(body) + " has no computed flexibility column");
+        r += f * F.S.col(i);
+      }
+    return r;
+  }
+
   void TwoBodyContact::compute_columns(int body, const std::vector<int> &idx)
   {
     double t = 0;

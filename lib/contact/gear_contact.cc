@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <set>
 #include <optional>
 
 namespace gearfem::contact
@@ -249,6 +250,39 @@ namespace gearfem::contact
   }
 
   GearContactModel::~GearContactModel() = default;
+
+  void GearContactModel::observe_root_stress()
+  {
+    if (observes_root_stress())
+      return;
+    namespace bd = mesh::boundary;
+    for (int i = 1; i <= 2; ++i)
+      {
+        std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+        const int z = pair_->gear(i).teeth();
+        std::set<int> teeth;
+        for (const int t : fine_[i - 1])
+          teeth.insert(((t % z) + z) % z);
+        for (const int t : teeth)
+          {
+            auto f = bodies_[i - 1]->boundary_stress_functionals(bd::tooth_id(t, bd::fillet_drive));
+            FilletObservation o;
+            o.tooth     = t;
+            o.first_row = int(rows.size());
+            for (const auto &sm : f.samples)
+              {
+                o.x.emplace_back(sm.stress.x[0], sm.stress.x[1]);
+                o.arc.push_back(sm.arc_length);
+              }
+            for (auto &r : f.rows)
+              rows.push_back(std::move(r));
+            fillets_[i - 1].push_back(std::move(o));
+          }
+        reaction_row_[i - 1] = int(rows.size());
+        rows.push_back(bodies_[i - 1]->reaction_moment_functional());
+        solver_->observe(i, rows);
+      }
+  }
 
   double GearContactModel::mesh_seconds() const { return section_seconds(timer_, "mesh"); }
 

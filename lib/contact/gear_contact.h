@@ -65,6 +65,16 @@ namespace gearfem::contact
                            const fem::Elasticity &material, const fem::FeOptions &fe,
                            dealii::TimerOutput *timer = nullptr);
 
+  /// The drive (tension-side) fillet of one fine tooth as observed by the flexibility cache:
+  /// the samples of fem::ElasticBody::boundary_stress, rows first_row + 3 i + (xx, yy, xy).
+  struct FilletObservation
+  {
+    int tooth = 0;          ///< tooth index in [0, z)
+    int first_row = 0;      ///< first row of TwoBodyContact::observed(body)
+    std::vector<Vec2> x;    ///< sample points, body frame [m]
+    std::vector<double> arc; ///< arc length along the fillet [m]
+  };
+
   /// The bodies and solver of one pair.
   class GearContactModel
   {
@@ -122,6 +132,17 @@ namespace gearfem::contact
     /// Fine teeth (body-frame indices) of gear i.
     const std::vector<int> &fine_teeth(int i) const { return fine_[i - 1]; }
 
+    /// Observe, on every flexibility column the solver computes, the drive-fillet stresses of
+    /// the fine teeth and the bore reaction moment of both gears (unit-load solves of the
+    /// influence coefficients: TwoBodyContact::observe). Then a position's root stresses and
+    /// reaction moment are linear maps of its nodal contact forces (post uses them when no
+    /// field is written). Drops the cached columns; idempotent.
+    void observe_root_stress();
+    bool observes_root_stress() const { return !fillets_[0].empty(); }
+    /// The observed fillets of gear i, and the row of its reaction moment (observe_root_stress).
+    const std::vector<FilletObservation> &fillets(int i) const { return fillets_[i - 1]; }
+    int reaction_row(int i) const { return reaction_row_[i - 1]; }
+
     /// The scene at pinion position phi1: rigid placements and, with per-zone slaves, the
     /// slave nodes of each tooth pair. `normal_force` [N] sizes the Hertz patch that decides
     /// whether a tip corner is within reach.
@@ -149,6 +170,8 @@ namespace gearfem::contact
     std::unique_ptr<ContactSurface> surfaces_[2];
     std::unique_ptr<TwoBodyContact> solver_;
     std::vector<int> fine_[2];
+    std::vector<FilletObservation> fillets_[2];
+    int reaction_row_[2] = {-1, -1};
     std::vector<bool> slave_capable_[2]; ///< surface nodes on a drive flank, tip rounding or tip
     int tooth0_[2] = {0, 0};             ///< tooth of each gear at C when phi1 = 0
     double sense_[2] = {1, -1};          ///< sign of d(body angle)/d(phi1)

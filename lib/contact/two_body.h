@@ -157,6 +157,10 @@ namespace gearfem::contact
     /// The observed functionals per unit universe force: rows x universe [unit/N]; column j
     /// is valid once flexibility column j is computed (compute_columns).
     const Eigen::MatrixXd &observed(int body) const { return cache_[body - 1].flex->S; }
+    /// The observed functionals under the nodal forces (global DoF, value) [N] of body
+    /// `body`, all on its universe and with their columns computed (the forces of a solution
+    /// of this solver): observed(body) * f. SolverError for a force off the computed columns.
+    Eigen::VectorXd observed_response(int body, const std::vector<std::pair<unsigned int, double>> &forces) const;
     /// Compute the flexibility columns (and observed values) of universe indices `idx` now.
     void compute_columns(int body, const std::vector<int> &idx);
     /// The condensed problem of `solution`, a converged solve of `scene` by this solver

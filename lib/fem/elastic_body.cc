@@ -15,6 +15,7 @@
 #include <deal.II/numerics/vector_tools_point_value.h>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cmath>
 
@@ -268,6 +269,21 @@ namespace gearfem::fem
       m += dof_component_[i] == 0 ? -(dof_points_[i][1] - c[1]) * F[i] :
                                     (dof_points_[i][0] - c[0]) * F[i];
     return m;
+  }
+
+  std::vector<std::pair<unsigned int, double>> ElasticBody::reaction_moment_functional(const Point2 &c) const
+  {
+    std::map<unsigned int, double> row;
+    for (unsigned int i = 0; i < stiffness_.m(); ++i)
+      {
+        if (!constrained_[i])
+          continue;
+        const double arm = dof_component_[i] == 0 ? -(dof_points_[i][1] - c[1]) : dof_points_[i][0] - c[0];
+        for (auto it = stiffness_.begin(i); it != stiffness_.end(i); ++it)
+          if (!constrained_[it->column()] && it->value() != 0)
+            row[static_cast<unsigned int>(it->column())] += arm * it->value();
+      }
+    return {row.begin(), row.end()};
   }
 
   Tensor2 ElasticBody::resultant(const dealii::Vector<double> &F) const

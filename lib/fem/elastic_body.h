@@ -145,6 +145,10 @@ namespace gearfem::fem
                                      const dealii::Vector<double> &f) const;
     /// Displacement u_h(x) [m] at a point of the body (cell search + mapping inverse).
     Tensor2 displacement_at(const dealii::Vector<double> &u, const Point2 &x) const;
+    /// The moment about `centre` of the reactions on the constrained DoFs, K u - f there, as a
+    /// linear functional of u (sparse row over the DoFs; f has no entries on constrained DoFs
+    /// for surface loads): moment(reactions(u, f)) = sum row_j u_j.
+    std::vector<std::pair<unsigned int, double>> reaction_moment_functional(const Point2 &centre = {}) const;
     /// Moment about `centre` of a nodal force vector (sum x_i × F_i) [N m].
     double moment(const dealii::Vector<double> &nodal_forces, const Point2 &centre = {}) const;
     /// Sum of a nodal force vector [N].

@@ -175,9 +175,69 @@ namespace gearfem::post
     return r;
   }
 
+  namespace
+  {
+    /// Peak fillet sigma_1 of tooth `tooth` of gear i from its observed stresses `s`.
+    std::pair<double, double> observed_root_stress(const contact::GearContactModel &model, int i, int tooth,
+                                                   const Eigen::VectorXd &s)
+    {
+      for (const auto &o : model.fillets(i))
+        {
+          if (o.tooth != tooth)
+            continue;
+          double peak = -1e300, radius = 0;
+          for (std::size_t k = 0; k < o.x.size(); ++k)
+            {
+              const Eigen::Index r = o.first_row + Eigen::Index(3 * k);
+              const double s1      = fem::principal_stresses(s[r], s[r + 1], s[r + 2])[0];
+              if (s1 > peak)
+                peak = s1, radius = o.x[k].norm();
+            }
+          return {peak, radius};
+        }
+      throw SolverError("root stress: tooth " + std::to_string(tooth) + " of gear " + std::to_string(i) +
+                        " is loaded but not observed (not a fine tooth)");
+    }
+
+    /// evaluate_position without displacement fields: root stresses and the bore reaction
+    /// from the influence coefficients of the flexibility cache (the same linear maps).
+    PositionResult evaluate_observed(const contact::GearContactModel &model, const contact::ContactState &state,
+                                     const PostOptions &options)
+    {
+      const auto &sol = state.solution;
+      const Eigen::VectorXd s[2] = {model.solver().observed_response(1, sol.forces[0]),
+                                    model.solver().observed_response(2, sol.forces[1])};
+      const int z[2] = {model.pair().gear(1).teeth(), model.pair().gear(2).teeth()};
+      const fem::Elasticity material[2] = {model.body(1).material(), model.body(2).material()};
+      PositionResult r = evaluate_contact(model.pair(), material, state, model.placements(state.phi1, sol.q), options,
+                                          [&](ToothPairResult &tp) {
+                                            const int kp = ((tp.pinion_tooth % z[0]) + z[0]) % z[0];
+                                            const int kg = ((tp.gear_tooth % z[1]) + z[1]) % z[1];
+                                            std::tie(tp.root_stress_pinion, tp.root_radius_pinion) =
+                                              observed_root_stress(model, 1, kp, s[0]);
+                                            std::tie(tp.root_stress_gear, tp.root_radius_gear) =
+                                              observed_root_stress(model, 2, kg, s[1]);
+                                          });
+      double m[2] = {0, 0};
+      for (int b = 0; b < 2; ++b)
+        {
+          const auto &pts = model.body(b + 1).dof_points();
+          const auto &cmp = model.body(b + 1).dof_components();
+          for (const auto &[d, v] : sol.forces[b])
+            m[b] += cmp[d] == 0 ? -pts[d][1] * v : pts[d][0] * v;
+        }
+      r.torque_contact  = -m[0];
+      r.torque_reaction = s[0][model.reaction_row(1)];
+      r.torque_gear     = std::abs(m[1]);
+      return r;
+    }
+  } // namespace
+
   PositionResult evaluate_position(const contact::GearContactModel &model, const contact::ContactState &state,
                                    const PostOptions &options, bool keep)
   {
+    if (model.observes_root_stress() && !keep)
+      return evaluate_observed(model, state, options);
     const auto &sol = state.solution;
     // Full displacement fields and equilibrium checks.
     const fem::ElasticBody &b1 = model.body(1), &b2 = model.body(2);

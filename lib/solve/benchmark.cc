@@ -60,6 +60,7 @@ namespace gearfem::solve
       {
         in.contact.method = m;
         auto model        = in.model();
+        model->observe_root_stress(); // as run_solve: root stress from influence coefficients
         loading::SweepPlan plan;
         plan.positions = positions;
         plan.torques   = {T};

@@ -267,6 +267,8 @@ namespace gearfem::solve
                            const SolveRunOptions &options)
   {
     validate(options.post);
+    // Root stresses and reactions from influence coefficients (fields only for VTU).
+    model.observe_root_stress();
     const double contact_before = contact::section_seconds(model.timer(), "contact");
     const auto &pair = *in.pair;
     loading::SweepPlan plan;
