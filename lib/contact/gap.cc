@@ -66,13 +66,15 @@ namespace gearfem::contact
   }
 
   bool TwoBodyContact::project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out,
-                                     double slave_offset) const
+                                     double slave_offset, long long hint_key) const
   {
     const ContactSurface &ms = surface(M);
     const auto &use          = scene.master_pieces[M - 1];
     const geometry::Placement PM = placed(scene, M, q);
     const Vec2 y                 = to_body(PM, xs);
-    out.pr = ms.project(y, options_.search_distance, use);
+    const auto hint = hint_key >= 0 ? hints_.find(hint_key) : hints_.end();
+    out.pr = hint != hints_.end() ? ms.project_from(y, options_.search_distance, use, hint->second) :
+                                    ms.project(y, options_.search_distance, use);
     if (out.pr.piece < 0)
       return false;
     // Closest point on the displaced master: project y - u_m(t), fixed point.
@@ -80,7 +82,7 @@ namespace gearfem::contact
       {
         out.face        = ms.face_at(out.pr.piece, out.pr.t, out.shape);
         const Vec2 um   = interpolate(M, out.face, out.shape);
-        const auto next = ms.project(y - um, options_.search_distance, use);
+        const auto next = ms.project_from(y - um, options_.search_distance, use, out.pr);
         if (next.piece < 0)
           break;
         const bool same = next.piece == out.pr.piece && std::abs(next.t - out.pr.t) < 1e-12;
@@ -88,6 +90,8 @@ namespace gearfem::contact
         if (same)
           break;
       }
+    if (hint_key >= 0)
+      hints_[hint_key] = out.pr;
     out.face      = ms.face_at(out.pr.piece, out.pr.t, out.shape);
     const Vec2 um = interpolate(M, out.face, out.shape);
     out.g         = (y - out.pr.point - um).dot(out.pr.normal) + slave_offset + gap_offset(M, out.pr.point);
@@ -133,7 +137,9 @@ namespace gearfem::contact
               sm.gp.x       = pc.curve.point(t);
               const Vec2 us = interpolate(S, sm.slave_face, sm.slave_shape);
               const Vec2 xs = PS.apply(sm.gp.x) + PS.apply_vector(us);
-              ok = sm.slave_face == f && project_point(scene, M, xs, q, sm.gp, gap_offset(S, sm.gp.x)) &&
+              // Hint key: slave body, face, sub-segment and Gauss point.
+              const long long key = ((((long long)(S) << 24) + f) * 64 + (long long)(l)) * 4 + k + (1LL << 40);
+              ok = sm.slave_face == f && project_point(scene, M, xs, q, sm.gp, gap_offset(S, sm.gp.x), key) &&
                    !sm.gp.pr.corner;
               samples.push_back(std::move(sm));
             }
@@ -186,7 +192,7 @@ namespace gearfem::contact
         const Vec2 xs = P[S - 1].apply(nd.x) + P[S - 1].apply_vector(displacement(S, i));
         Candidate c;
         c.S = S, c.node = i;
-        if (!project_point(scene, 3 - S, xs, q, c.at, gap_offset(S, nd.x)))
+        if (!project_point(scene, 3 - S, xs, q, c.at, gap_offset(S, nd.x), ((long long)(S) << 32) + i))
           continue;
         c.at.x = nd.x;
         c.g    = c.at.g;

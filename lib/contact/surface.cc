@@ -170,6 +170,28 @@ namespace gearfem::contact
     return Vec2(tau.y(), -tau.x());
   }
 
+  Projection ContactSurface::project_from(const Vec2 &q, double max_distance, const std::vector<bool> &use_piece,
+                                          const Projection &hint) const
+  {
+    if (hint.piece < 0 || hint.corner)
+      return project(q, max_distance, use_piece);
+    const auto &pc  = body_->mesh().pieces[hint.piece];
+    const double lo = std::min(pc.t0, pc.t1), hi = std::max(pc.t0, pc.t1);
+    bool ok         = false;
+    const double t  = pc.curve.closest_parameter_from(q, lo, hi, hint.t, ok);
+    if (!ok)
+      return project(q, max_distance, use_piece);
+    Projection p;
+    p.piece = hint.piece, p.t = t, p.point = pc.curve.point(t);
+    if ((q - p.point).norm() > max_distance)
+      return Projection();
+    std::vector<double> shape;
+    p.face            = face_at(p.piece, p.t, shape);
+    p.normal          = outward_normal(p.piece, p.t);
+    p.signed_distance = (q - p.point).dot(p.normal);
+    return p;
+  }
+
   Projection ContactSurface::project(const Vec2 &q, double max_distance,
                                      const std::vector<bool> &use_piece) const
   {

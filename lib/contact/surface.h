@@ -74,6 +74,11 @@ namespace gearfem::contact
     /// piece = -1 when none.
     Projection project(const Vec2 &q, double max_distance,
                        const std::vector<bool> &use_piece = {}) const;
+    /// The same near a previous projection `hint` (piece and parameter) of a nearby point:
+    /// Newton on the hint's piece only, when the closest point is interior to that piece
+    /// and within the hint's bracket; otherwise (a piece end, a jump) the full project().
+    Projection project_from(const Vec2 &q, double max_distance, const std::vector<bool> &use_piece,
+                            const Projection &hint) const;
     /// Face containing parameter t of `piece` and the shape values of its nodes at t.
     int face_at(int piece, double t, std::vector<double> &shape) const;
     /// Outward unit normal of piece p at parameter t (body frame).

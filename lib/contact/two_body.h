@@ -44,6 +44,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace gearfem::contact
@@ -244,8 +245,10 @@ namespace gearfem::contact
     /// Project slave point xs (pair frame) onto body M's displaced master (fixed point on the
     /// master displacement). false when nothing lies within the search distance.
     /// `slave_offset`: the slave body's gap modification at the point [m].
+    /// `hint_key` (>= 0) names the slave point: its last projection starts this one
+    /// (ContactSurface::project_from), and this one is kept for the next.
     bool project_point(const Scene &scene, int M, const Vec2 &xs, double q, GapPoint &out,
-                       double slave_offset = 0.0) const;
+                       double slave_offset = 0.0, long long hint_key = -1) const;
     /// Gap modification of body `body` at body-frame point x (0 without one).
     double gap_offset(int body, const Vec2 &x) const { return gap_mod_[body - 1] ? gap_mod_[body - 1](x) : 0.0; }
     /// Gauss samples of the slave faces around candidate c, and its integrated gap terms;
@@ -270,5 +273,9 @@ namespace gearfem::contact
     Drive drive_;
     GapModification gap_mod_[2];
     BodyCache cache_[2];
+    /// The last projection of each slave point (node or face sample) onto its master, the
+    /// start of the next one (search is const: a cache, not state; every projection is
+    /// exact to the Newton tolerance whether it starts from a hint or not).
+    mutable std::unordered_map<long long, Projection> hints_;
   };
 } // namespace gearfem::contact

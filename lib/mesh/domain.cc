@@ -42,6 +42,34 @@ namespace gearfem::mesh
     }
   } // namespace boundary
 
+  namespace
+  {
+    /// Safeguarded Newton on f(t) = (p(t) - q) . p'(t) = 0 from t in the bracket [a, b].
+    double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b)
+    {
+      for (int it = 0; it < 50; ++it)
+        {
+          const Vec2 r = c.point(t) - q, p1 = c.d1(t), p2 = c.d2(t);
+          const double f = r.dot(p1), df = p1.squaredNorm() + r.dot(p2);
+          // Keep a bracket [a, b] for safeguarding (f is increasing through the minimum).
+          if (f > 0)
+            b = t;
+          else
+            a = t;
+          double tn = (df > 0) ? t - f / df : 0.5 * (a + b);
+          if (!(tn > a && tn < b))
+            tn = 0.5 * (a + b);
+          if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t)) + 1e-16 * (hi - lo))
+            {
+              t = tn;
+              break;
+            }
+          t = tn;
+        }
+      return std::clamp(t, lo, hi);
+    }
+  } // namespace
+
   double ParametricCurve::closest_parameter(const Vec2 &q, double lo, double hi) const
   {
     if (lo > hi)
@@ -55,29 +83,22 @@ namespace gearfem::mesh
         if (d < best_d)
           best_d = d, best = t;
       }
-    double t        = best;
     const double dt = (hi - lo) / n;
-    double a = std::max(lo, best - dt), b = std::min(hi, best + dt);
-    for (int it = 0; it < 50; ++it)
-      {
-        const Vec2 r = point(t) - q, p1 = d1(t), p2 = d2(t);
-        const double f = r.dot(p1), df = p1.squaredNorm() + r.dot(p2);
-        // Keep a bracket [a, b] for safeguarding (f is increasing through the minimum).
-        if (f > 0)
-          b = t;
-        else
-          a = t;
-        double tn = (df > 0) ? t - f / df : 0.5 * (a + b);
-        if (!(tn > a && tn < b))
-          tn = 0.5 * (a + b);
-        if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t)) + 1e-16 * (hi - lo))
-          {
-            t = tn;
-            break;
-          }
-        t = tn;
-      }
-    return std::clamp(t, lo, hi);
+    return newton_closest(*this, q, lo, hi, best, std::max(lo, best - dt), std::min(hi, best + dt));
+  }
+
+  double ParametricCurve::closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok) const
+  {
+    if (lo > hi)
+      std::swap(lo, hi);
+    const double dt = (hi - lo) / 32;
+    const double a = std::max(lo, t0 - dt), b = std::min(hi, t0 + dt);
+    const auto f = [&](double t) { return (point(t) - q).dot(d1(t)); };
+    // The minimum must lie strictly inside the bracket: f < 0 at a, f > 0 at b.
+    ok = a > lo && b < hi && f(a) < 0 && f(b) > 0;
+    if (!ok)
+      return t0;
+    return newton_closest(*this, q, lo, hi, std::clamp(t0, a, b), a, b);
   }
 
   ParametricCurve ParametricCurve::from(const geometry::CurvePtr &curve, double angle)

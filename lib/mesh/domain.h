@@ -59,6 +59,10 @@ namespace gearfem::mesh
     /// Parameter in [lo, hi] of the point closest to q: sampling followed by safeguarded
     /// Newton on (p(t) - q)·p'(t) = 0.
     double closest_parameter(const Vec2 &q, double lo, double hi) const;
+    /// The same from a start t0 near the answer (a previous projection): safeguarded Newton
+    /// in the bracket t0 -/+ (hi - lo)/32, without the sampling. `ok` false (and the result
+    /// meaningless) when the bracket does not hold the minimum: call closest_parameter.
+    double closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok) const;
     /// A Curve rotated by `angle` [rad] about the origin (curve may be null-free only).
     static ParametricCurve from(const geometry::CurvePtr &curve, double angle = 0.0);
     /// Circle of radius r about c: c + r (cos t, sin t).
