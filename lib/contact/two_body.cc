@@ -94,6 +94,10 @@ namespace gearfem::contact
   ContactSolution TwoBodyContact::solve(const Scene &scene, Control control, double value,
                                         const ContactSolution *warm)
   {
+    // Projection hints live for one configuration: its geometric iterations (and load cuts)
+    // start from each other, and a configuration's result does not depend on what was
+    // solved before it (a resumed sweep equals an uninterrupted one bit for bit).
+    hints_.clear();
     ContactSolution r = solve_once(scene, control, value, warm);
     if (r.converged)
       return r;

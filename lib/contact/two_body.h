@@ -274,8 +274,8 @@ namespace gearfem::contact
     GapModification gap_mod_[2];
     BodyCache cache_[2];
     /// The last projection of each slave point (node or face sample) onto its master, the
-    /// start of the next one (search is const: a cache, not state; every projection is
-    /// exact to the Newton tolerance whether it starts from a hint or not).
+    /// start of the next one within one configuration (cleared by solve(); search is const:
+    /// a cache, not state; every projection is exact to the Newton tolerance).
     mutable std::unordered_map<long long, Projection> hints_;
   };
 } // namespace gearfem::contact
