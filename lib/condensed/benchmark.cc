@@ -16,6 +16,7 @@
 #include <fstream>
 #include <cmath>
 #include <iomanip>
+#include <list>
 #include <sstream>
 
 namespace gearfem::condensed
@@ -71,10 +72,12 @@ namespace gearfem::condensed
       double torque;
       std::string extra;
     };
+    // The model points to the pair of the variant it was last re-targeted to: keep them all.
+    std::list<solve::GearContactInput> variants;
     for (const Variant &v : {Variant{"T/2", T / 2, ""}, Variant{"2 T", 2 * T, ""},
                              Variant{"T, 10 um long relief", T, relief}})
       {
-        const solve::GearContactInput vin = parse(base + v.extra);
+        const solve::GearContactInput &vin = variants.emplace_back(parse(base + v.extra));
         const Resolver resolver(cycle, vin);
         model->set_micro_geometry(*vin.pair);
         double t_full = 0, t_cond = 0, d_ste = 0, d_root = 0, d_share = 0;

@@ -88,18 +88,25 @@ namespace gearfem::condensed
                              double build_torque, double torque_lo, double torque_hi, std::ostream *out)
   {
     check_condensable(in);
+    CondensedCycle c = build_cycle(model, in.positions(), build_torque, torque_lo, torque_hi, out);
+    c.key           = condensed_key(in);
+    c.geometry_hash = geometry::geometry_fingerprint(in.unmodified_pair ? *in.unmodified_pair : *in.pair);
+    c.method        = contact::to_string(in.contact.method);
+    return c;
+  }
+
+  CondensedCycle build_cycle(contact::GearContactModel &model, const std::vector<std::pair<std::string, double>> &positions,
+                             double build_torque, double torque_lo, double torque_hi, std::ostream *out)
+  {
     require_greater("Condense/Build torque", build_torque, 0.0, "N m");
     if (!(torque_lo > 0 && torque_lo <= build_torque && build_torque <= torque_hi && std::isfinite(torque_hi)))
       throw InputError("Condense/Torque range", to_string_g(torque_lo) + ", " + to_string_g(torque_hi),
                        "0 < low <= build torque (" + to_string_g(build_torque) + " N m) <= high");
     const auto t0 = std::chrono::steady_clock::now();
     CondensedCycle c;
-    c.key           = condensed_key(in);
-    c.geometry_hash = geometry::geometry_fingerprint(in.unmodified_pair ? *in.unmodified_pair : *in.pair);
-    c.method        = contact::to_string(in.contact.method);
     c.build_torque  = build_torque;
     c.torque_lo = torque_lo, c.torque_hi = torque_hi;
-    c.positions     = in.positions();
+    c.positions     = positions;
     c.setup_seconds = model.setup_seconds();
     c.dofs          = int(model.n_dofs());
     auto &solver    = model.contact_solver();

@@ -87,6 +87,12 @@ namespace gearfem::condensed
   CondensedCycle build_cycle(contact::GearContactModel &model, const solve::GearContactInput &in,
                              double build_torque, double torque_lo, double torque_hi, std::ostream *out = nullptr);
 
+  /// The same on given positions (name, roll angle [rad]) of `model`, without an input: the
+  /// cycle's key, geometry hash and method are left empty (for a caller that owns the model,
+  /// e.g. the tip-relief optimiser).
+  CondensedCycle build_cycle(contact::GearContactModel &model, const std::vector<std::pair<std::string, double>> &positions,
+                             double build_torque, double torque_lo, double torque_hi, std::ostream *out = nullptr);
+
   /// Write `c` to `file` atomically (docs/output-format.md).
   void write_cycle(const CondensedCycle &c, const std::filesystem::path &file);
   /// Read a condensed cycle. InputError naming the file and item for a missing, foreign,

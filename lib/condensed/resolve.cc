@@ -57,11 +57,11 @@ namespace gearfem::condensed
     return offsets(cycle_.cycle.at(k).front());
   }
 
-  Eigen::VectorXd Resolver::offsets(const contact::CondensedPosition &p) const
+  Eigen::VectorXd relief_offsets(const contact::CondensedPosition &p, const geometry::GearPair &pair)
   {
     Eigen::VectorXd o = Eigen::VectorXd::Zero(Eigen::Index(p.size()));
     using Relief      = geometry::TipRelief::Kind;
-    const geometry::ToothProfile *g[2] = {&in_.pair->gear(1), &in_.pair->gear(2)};
+    const geometry::ToothProfile *g[2] = {&pair.gear(1), &pair.gear(2)};
     const bool any[2] = {g[0]->parameters().relief.kind != Relief::none, g[1]->parameters().relief.kind != Relief::none};
     if (!any[0] && !any[1])
       return o;
@@ -71,6 +71,8 @@ namespace gearfem::condensed
           o[Eigen::Index(c)] += s.weight * g[s.body - 1]->relief_at_radius(s.x.norm());
     return o;
   }
+
+  Eigen::VectorXd Resolver::offsets(const contact::CondensedPosition &p) const { return relief_offsets(p, *in_.pair); }
 
   std::pair<double, double> Resolver::root_stress(int b, int tooth, const std::vector<std::pair<int, double>> &f) const
   {

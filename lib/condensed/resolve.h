@@ -23,6 +23,10 @@ namespace gearfem::condensed
     post::PositionResult result;
   };
 
+  /// The gap offsets [m] of the tip reliefs of `pair` at the candidates of `p` (zero without
+  /// reliefs): what the full solver adds on the gap route (Contact/Micro-geometry = gap).
+  Eigen::VectorXd relief_offsets(const contact::CondensedPosition &p, const geometry::GearPair &pair);
+
   class Resolver
   {
   public:

@@ -1,6 +1,8 @@
 // Tip-relief optimisation with the FE model in the loop (see relief.h): the problem, the
 // model built once and re-targeted per evaluation, the optimiser and grid runs.
 #include "optimise/relief.h"
+#include "condensed/cycle.h"
+#include "condensed/resolve.h"
 #include "base/units.h"
 
 #include "base/errors.h"
@@ -193,7 +195,7 @@ namespace gearfem::optimise
   }
 
   ReliefModel::ReliefModel(const geometry::GeometryInput &geometry, const solve::GearContactInput &in,
-                           const ReliefProblem &problem)
+                           const ReliefProblem &problem, bool condensed)
     : geometry_(geometry), problem_(problem)
   {
     problem_.check();
@@ -205,6 +207,37 @@ namespace gearfem::optimise
     check_relief_geometry(geometry, problem_);
     model_ = std::make_unique<contact::GearContactModel>(*base_pair_, in.mesh, in.material, in.fe, options);
     positions_ = contact::cycle_positions(*base_pair_, problem_.positions, 1.0, base_pair_->point("A").roll_angle);
+    if (condensed)
+      {
+        std::vector<double> T = problem_.torques;
+        T.insert(T.end(), problem_.check_torques.begin(), problem_.check_torques.end());
+        const double lo = *std::min_element(T.begin(), T.end()), hi = *std::max_element(T.begin(), T.end());
+        std::vector<std::pair<std::string, double>> named;
+        for (const double phi : positions_)
+          named.emplace_back("", phi);
+        model_->set_micro_geometry(*base_pair_);
+        cycle_ = std::make_unique<condensed::CondensedCycle>(
+          condensed::build_cycle(*model_, named, std::sqrt(lo * hi), lo, hi));
+      }
+  }
+
+  bool ReliefModel::condensed_cycle_ste(const geometry::GearPair &pair, double T, std::vector<double> &ste) const
+  {
+    ste.assign(positions_.size(), 0.0);
+    const double rb1 = base_pair_->base_radius(1);
+    try
+      {
+        for (std::size_t k = 0; k < positions_.size(); ++k)
+          {
+            const auto &p = cycle_->at(k, T);
+            ste[k] = contact::solve_condensed(p, condensed::relief_offsets(p, pair), T).solution.q * rb1 * 1e6;
+          }
+        return true;
+      }
+    catch (const SolverError &)
+      {
+        return false;
+      }
   }
 
   ReliefModel::~ReliefModel() = default;
@@ -237,15 +270,23 @@ namespace gearfem::optimise
                                   "model's");
     const auto t0 = std::chrono::steady_clock::now();
     auto pair     = std::make_unique<geometry::GearPair>(geometry::build_pair(relief_geometry(geometry_, problem_, x)));
-    model_->set_micro_geometry(*pair);
-    current_ = std::move(pair); // the model now points to it; the previous design is freed
     ++evaluations_;
     loading::SweepPlan plan;
     for (const double phi : positions_)
       plan.positions.emplace_back("", phi);
     plan.torques = problem.torques;
     SteObserver obs(base_pair_->base_radius(1), plan.torques.size(), plan.positions.size());
-    const loading::SweepOutcome o = loading::run_sweep(*model_, plan, {&obs});
+    bool on_cycle = cycle_ != nullptr;
+    for (std::size_t k = 0; k < plan.torques.size() && on_cycle; ++k)
+      on_cycle = condensed_cycle_ste(*pair, plan.torques[k], obs.ste[k]);
+    loading::SweepOutcome o;
+    if (!on_cycle)
+      {
+        fallbacks_ += cycle_ != nullptr;
+        model_->set_micro_geometry(*pair);
+        current_ = std::move(pair); // the model now points to it; the previous design is freed
+        o        = loading::run_sweep(*model_, plan, {&obs});
+      }
     ReliefResult r;
     r.ok      = o.failure.empty();
     r.failure = o.failure;
@@ -404,13 +445,17 @@ namespace gearfem::optimise
   ReliefStudyResult run_relief_study(const ReliefStudy &s, std::ostream *out)
   {
     s.problem.check();
-    ReliefModel model(s.geometry, *s.input, s.problem);
+    ReliefModel model(s.geometry, *s.input, s.problem, s.condensed);
     ReliefStudyResult r;
     r.setup_seconds = model.setup_seconds();
+    r.condensed     = model.cycle() != nullptr;
+    r.cycle_seconds = r.condensed ? model.cycle()->build_seconds : 0.0;
     if (out)
       *out << "model: " << model.model().n_dofs() << " DoFs, set-up (mesh, assemble, factorise) " << g(r.setup_seconds, 3)
            << " s, built once; " << model.positions().size() << " positions x " << s.problem.torques.size()
-           << " torque(s) per evaluation" << std::endl;
+           << " torque(s) per evaluation"
+           << (r.condensed ? "; designs on a condensed cycle built in " + g(r.cycle_seconds, 3) + " s" : std::string())
+           << std::endl;
     r.unrelieved.x      = std::vector<double>(s.problem.n_variables(), 0.0);
     for (std::size_t i = 1; i < r.unrelieved.x.size(); i += 2)
       r.unrelieved.x[i] = s.problem.length_min;
@@ -447,6 +492,10 @@ namespace gearfem::optimise
           designs.emplace_back("grid best", r.grid.best_row().x);
         r.check = check_designs(model, s.problem, designs, s.problem.check_torques, out);
       }
+    r.fallbacks = model.fallbacks();
+    if (out && r.condensed)
+      *out << "condensed cycle: " << model.evaluations() << " evaluations, " << r.fallbacks
+           << " of them fell back to the full FE sweep" << std::endl;
     return r;
   }
 } // namespace gearfem::optimise

@@ -61,6 +61,11 @@ namespace gearfem::optimise
                       "grid's best at each of these torques on the same model (robust.csv, relief_robust.png); "
                       "comma-separated, empty = none. Units: N m. Allowed: up to 50 torques, each > 0 and "
                       "within the small-strain limit of Solve/Torques.");
+    prm.declare_entry("Condensed cycle", "auto", Selection("auto|off"),
+                      "auto: evaluate the designs on a condensed cycle of the model (gearfem condense), built once "
+                      "over the positions for the torques and check torques: milliseconds per design instead of "
+                      "a sweep, within 0.1 % of the full FE (docs/model-choice.md); a design the cycle cannot "
+                      "serve falls back to the full sweep (summary). off: a full FE sweep per design. Units: none.");
     prm.leave_subsection();
   }
 
@@ -87,6 +92,16 @@ namespace gearfem::optimise
       p.check_torques        = params::get_torques(prm, "Check torques", "Optimise/Tip relief/Check torques", true);
       prm.leave_subsection();
       prm.leave_subsection();
+    }
+
+    bool read_condensed(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Optimise");
+      prm.enter_subsection("Tip relief");
+      const bool c = prm.get("Condensed cycle") == "auto";
+      prm.leave_subsection();
+      prm.leave_subsection();
+      return c;
     }
 
     /// The shared Optimiser reader, with this problem's restrictions: exactly one method,
@@ -140,6 +155,7 @@ namespace gearfem::optimise
   {
     ReliefStudy s;
     read_problem(prm, s.problem);
+    s.condensed = read_condensed(prm);
     s.optimiser = read_optimiser(prm);
     s.geometry  = geometry::parse_geometry_parameters(prm);
     auto input  = std::make_shared<solve::GearContactInput>(solve::parse_gear_contact_input(prm));

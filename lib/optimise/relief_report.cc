@@ -80,8 +80,11 @@ namespace gearfem::optimise
         << "; " << (p.kind == geometry::TipRelief::Kind::linear ? "linear" : "parabolic") << " tip relief, "
         << (p.per_gear ? "per gear" : "the same on both gears") << "; box C_a " << g(p.amount_min * 1e6) << "-"
         << g(p.amount_max * 1e6) << " um, L " << g(p.length_min * 1e3) << "-" << g(p.length_max * 1e3) << " mm; "
-        << p.positions << " positions per mesh cycle; model set-up " << g(r.setup_seconds, 3)
-        << " s (once).\n\n| design | ";
+        << p.positions << " positions per mesh cycle; model set-up " << g(r.setup_seconds, 3) << " s (once)"
+        << (r.condensed ? "; designs evaluated on a condensed cycle of the model (built in " + g(r.cycle_seconds, 3) +
+                            " s; " + std::to_string(r.fallbacks) + " evaluations fell back to the full FE sweep)" :
+                          std::string())
+        << ".\n\n| design | ";
     for (const auto &n : p.variable_names())
       out << n << (n[0] == 'C' ? " [um]" : " [mm]") << " | ";
     out << "objective [um] | ";

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <list>
 #include <memory>
 #include <string>
 
@@ -76,9 +77,11 @@ TEST(Condensed, ReSolvesTorquesAndReliefsLikeTheFullSolve)
 {
   auto &b = built();
   const post::PostOptions po;
+  // The model points to the pair of the variant it was last re-targeted to: keep them alive.
+  static std::list<solve::GearContactInput> variants;
   for (const double relief : {0.0, 6.0})
     {
-      const auto variant = parse(case_prm(relief));
+      const auto &variant = variants.emplace_back(parse(case_prm(relief)));
       const condensed::Resolver resolver(b.cycle, variant);
       b.model->set_micro_geometry(*variant.pair);
       for (const double T : {150.0, 300.0, 600.0})
