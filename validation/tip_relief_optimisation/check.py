@@ -166,8 +166,9 @@ def parabolic4_checks(c, out):
     c.at_most("FZG C optimiser FE evaluations", len(opt), 81, "Optimiser/Max evaluations 80 (+ the start)")
     sweep = [float(r["STE [um]"]) for r in csv.DictReader(open(os.path.join(out, "parabolic4_solve", "sweep.csv")))]
     o = ste["optimum"]
-    c.abs("FZG C: gearfem solve optimum.prm: p-p STE [um]", pp(sweep), pp(o), 1e-4 * max(o),
-          "the optimiser's evaluation of the optimum (gap route)")
+    c.abs("FZG C: gearfem solve optimum.prm: p-p STE [um]", pp(sweep), pp(o), 2e-3 * sum(o) / len(o),
+          "the optimiser's evaluation of the optimum on the condensed cycle (gap route): the full FE solve "
+          "reproduces it within the condensed cycle's accuracy, 0.2 % of the mean STE (docs/model-choice.md)")
     text = open(os.path.join(d, "optimum.prm")).read()
     n_par = len(re.findall(r"set Tip relief\s+= parabolic", text))
     c.true("FZG C optimum.prm: parabolic relief on both gears", n_par == 2, n_par, 2, "Tip relief/Kind = parabolic")
@@ -200,8 +201,9 @@ def sweep(name):
 gap, exact = sweep("solve_gap"), sweep("solve_exact")
 for t in torques:
     o = ste[("optimum", t)]
-    c.abs(f"solve optimum.prm (gap): p-p STE at {t} N m [um]", pp(gap[t]), pp(o), 1e-4 * max(o),
-          "the optimiser's evaluation of the optimum")
+    c.abs(f"solve optimum.prm (gap): p-p STE at {t} N m [um]", pp(gap[t]), pp(o), 2e-3 * sum(o) / len(o),
+          "the optimiser's evaluation of the optimum on the condensed cycle: the full FE solve reproduces it "
+          "within the condensed cycle's accuracy, 0.2 % of the mean STE (docs/model-choice.md)")
     mean = sum(exact[t]) / len(exact[t])
     c.abs(f"optimum re-meshed with its relief: p-p STE at {t} N m [um]", pp(exact[t]), pp(o), 1e-2 * mean,
           "gap vs geometry route: 1 % of mean STE at h_contact 0.2 mm, where two meshes of the same gear "
