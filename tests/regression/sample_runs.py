@@ -23,7 +23,9 @@ gearfem, src = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 NEEDS = {'calibrate validation/analytical_vs_fe/calibrate.prm':
          ('validation/parker_ste/results/plane_stress/results.h5', 'Calibration/Results files'),
          'solve inputs/demo.prm --condensed results/demo_condensed/condensed.h5':
-         ('results/demo_condensed/condensed.h5', 'condensed cycle file')}
+         ('results/demo_condensed/condensed.h5', 'condensed cycle file'),
+         'solve inputs/condense_demo.prm --condensed results/condense_demo/condensed.h5':
+         ('results/condense_demo/condensed.h5', 'condensed cycle file')}
 CHEAP = {'profile inputs/demo.prm', 'rate inputs/seed001_23_69_rate.prm', 'gearbox inputs/seed001_gearbox.prm',
          'gearbox inputs/seed001_gearbox_thesis_stresses.prm', 'profile inputs/fzg_c.prm',
          'dynamics inputs/dynamics_seed004.prm', 'mesh inputs/mesh_demo.prm'}
