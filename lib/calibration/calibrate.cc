@@ -114,14 +114,8 @@ namespace gearfem::calibration
         // Two-sided: reverse flank below -b, the gap [-b, 0], the drive flank above 0.
         tt.backlash      = grid.backlash;
         r.reverse_offset = reverse_offset(an::involute_tooth(pair.gear(1)), pc.line(), tt.backlash);
-        for (int j = grid.n_load - 1; j >= 0; --j)
-          tt.second.push_back(-tt.backlash - drive[j]);
-        if (tt.backlash > 0)
-          tt.second.push_back(0.0);
-        tt.second.insert(tt.second.end(), drive.begin() + 1, drive.end());
       }
-    else
-      tt.second = drive;
+    tt.second = io::torque_table_axis(drive, grid.backlash);
     for (const double th : tt.theta)
       for (const double d : tt.second)
         tt.values.push_back(grid.backlash >= 0 ? m.torque(th, d, tt.backlash, r.reverse_offset) :

@@ -96,14 +96,8 @@ namespace gearfem::condensed
         t.backlash = o.backlash;
         psi = calibration::reverse_offset(analytical::involute_tooth(pair.gear(1)), analytical::pair_line(pair),
                                           o.backlash);
-        for (int j = o.n_delta - 1; j >= 0; --j)
-          t.second.push_back(-o.backlash - drive[j]);
-        if (o.backlash > 0)
-          t.second.push_back(0.0);
-        t.second.insert(t.second.end(), drive.begin() + 1, drive.end());
       }
-    else
-      t.second = drive;
+    t.second = io::torque_table_axis(drive, o.backlash);
     for (std::size_t k = 0; k < n; ++k)
       for (const double d : t.second)
         {

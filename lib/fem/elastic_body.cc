@@ -334,6 +334,14 @@ namespace gearfem::fem
     return p;
   }
 
+  dealii::Quadrature<1> ElasticBody::boundary_samples(unsigned int per_face)
+  {
+    std::vector<dealii::Point<1>> pts;
+    for (unsigned int k = 0; k < per_face; ++k)
+      pts.emplace_back((k + 0.5) / per_face);
+    return dealii::Quadrature<1>(pts, std::vector<double>(per_face, 1.0 / per_face));
+  }
+
   void ElasticBody::locate_on_pieces(BoundaryStressSample &s, const std::vector<int> &pieces) const
   {
     const mesh::Vec2 x(s.stress.x[0], s.stress.x[1]);
@@ -389,10 +397,7 @@ namespace gearfem::fem
     const std::vector<int> pieces = pieces_with_id(id);
     if (pieces.empty())
       throw InputError("boundary id", std::to_string(id), "an id of this body's mesh");
-    std::vector<dealii::Point<1>> pts;
-    for (unsigned int k = 0; k < per_face; ++k)
-      pts.emplace_back((k + 0.5) / per_face);
-    const dealii::Quadrature<1> q(pts, std::vector<double>(per_face, 1.0 / per_face));
+    const dealii::Quadrature<1> q = boundary_samples(per_face);
     dealii::FEFaceValues<2> fv(*mapping_, fe_, q, dealii::update_gradients | dealii::update_quadrature_points);
     std::vector<std::vector<dealii::Tensor<1, 2>>> grads(q.size(), std::vector<dealii::Tensor<1, 2>>(2));
     std::vector<BoundaryStressSample> out;
@@ -420,10 +425,7 @@ namespace gearfem::fem
     const std::vector<int> pieces = pieces_with_id(id);
     if (pieces.empty())
       throw InputError("boundary id", std::to_string(id), "an id of this body's mesh");
-    std::vector<dealii::Point<1>> pts;
-    for (unsigned int k = 0; k < per_face; ++k)
-      pts.emplace_back((k + 0.5) / per_face);
-    const dealii::Quadrature<1> q(pts, std::vector<double>(per_face, 1.0 / per_face));
+    const dealii::Quadrature<1> q = boundary_samples(per_face);
     dealii::FEFaceValues<2> fv(*mapping_, fe_, q, dealii::update_gradients | dealii::update_quadrature_points);
     std::vector<dealii::types::global_dof_index> dofs(fe_.dofs_per_cell);
     // The stress of a unit strain component: sigma is linear in (exx, eyy, exy).

@@ -205,6 +205,8 @@ namespace gearfem::fem
   private:
     StressPoint stress_at(const std::vector<dealii::Tensor<1, 2>> &grad_u, const Point2 &x) const;
     std::vector<int> pieces_with_id(dealii::types::boundary_id id) const;
+    /// `per_face` equally spaced points on a face (the boundary stress samples).
+    static dealii::Quadrature<1> boundary_samples(unsigned int per_face);
     /// Exact-curve piece and parameter of boundary sample `s` (nearest of `pieces`).
     void locate_on_pieces(BoundaryStressSample &s, const std::vector<int> &pieces) const;
     /// The permutation that orders boundary samples along the outline (by piece, then

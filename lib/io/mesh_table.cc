@@ -145,4 +145,16 @@ namespace gearfem::io
                        "<= " + to_string_g(tmax) + " N*m",
                        "the table does not cover the requested load");
   }
+  std::vector<double> torque_table_axis(const std::vector<double> &drive, double backlash)
+  {
+    if (backlash < 0)
+      return drive;
+    std::vector<double> axis;
+    for (auto it = drive.rbegin(); it != drive.rend(); ++it)
+      axis.push_back(-backlash - *it);
+    if (backlash > 0)
+      axis.push_back(0.0);
+    axis.insert(axis.end(), drive.begin() + 1, drive.end());
+    return axis;
+  }
 } // namespace gearfem::io

@@ -49,6 +49,10 @@ namespace gearfem::io
   const char *second_axis_unit(MeshTable::Kind k);
   const char *value_axis_unit(MeshTable::Kind k);
   const char *value_quantity(MeshTable::Kind k);
+  /// The delta axis of a torque table from its drive-side compressions `drive` (ascending,
+  /// from 0): `drive` itself when one-sided (backlash < 0), else the reverse side
+  /// -b - drive (descending), a node at 0 when b > 0, then the drive side.
+  std::vector<double> torque_table_axis(const std::vector<double> &drive, double backlash);
   /// Index of the node of `axis` at x (relative tolerance 1e-9 of the axis span); -1: none.
   long node_at(const std::vector<double> &axis, double x);
 } // namespace gearfem::io
