@@ -7,6 +7,7 @@
 // the stress of the displacement field (same linear map) to round-off.
 #include "condensed/cycle.h"
 #include "condensed/resolve.h"
+#include "condensed/table.h"
 #include "common/fixtures.h"
 #include "base/errors.h"
 #include "post/position.h"
@@ -188,4 +189,43 @@ TEST(Condensed, ContactBeyondTheStoredCandidatesFailsLoudly)
     {
       EXPECT_NE(std::string(e.what()).find("edge of the stored candidates"), std::string::npos) << e.what();
     }
+}
+
+TEST(Condensed, TorqueTableMatchesRotationControlledFullSolves)
+{
+  // Independent reference: the full FE under rotation control (GearContactModel::
+  // solve_rotation) at table nodes; the table is contact solves on the cycle.
+  auto in          = parse(case_prm(0, "300", "subsection Solve\n  set Number of positions = 8\nend\n"));
+  auto model       = in.model();
+  const auto cycle = condensed::build_cycle(*model, in, 300, 30, 900);
+  condensed::TableOptions o;
+  o.n_delta  = 6;
+  o.backlash = 50e-6;
+  const io::MeshTable t = condensed::torque_table(cycle, *in.pair, o);
+  ASSERT_TRUE(t.two_sided());
+  ASSERT_EQ(t.theta.size(), 8u);
+  const double rb1 = in.pair->base_radius(1);
+  const long j0    = io::node_at(t.second, 0.0);
+  ASSERT_GE(j0, 0);
+  for (std::size_t i = 0; i < t.theta.size(); i += 3)
+    for (std::size_t j = std::size_t(j0) + 2; j < t.second.size(); j += 2)
+      {
+        const auto full = model->solve_rotation(t.theta[i], t.second[j] / rb1);
+        EXPECT_LT(rel(t.value(i, j), full.solution.load), 2e-3) << "theta " << t.theta[i] << ", delta " << t.second[j];
+      }
+  // The contract of a two-sided table: 0 on [-b, 0], reverse side <= 0, drive side >= 0.
+  for (std::size_t i = 0; i < t.theta.size(); ++i)
+    for (std::size_t j = 0; j < t.second.size(); ++j)
+      {
+        const double d = t.second[j], v = t.value(i, j);
+        if (d >= -o.backlash && d <= 0)
+          EXPECT_EQ(v, 0.0);
+        else
+          EXPECT_TRUE(d > 0 ? v > 0 : v < 0) << d << " " << v;
+      }
+  // Not one pitch of positions: refused with the entry named.
+  auto few = parse(case_prm(0, "300", "subsection Solve\n  set Pitches = 0.5\n  set Number of positions = 8\nend\n"));
+  auto m2  = few.model();
+  const auto c2 = condensed::build_cycle(*m2, few, 300, 30, 900);
+  EXPECT_THROW(condensed::torque_table(c2, *few.pair, o), InputError);
 }
