@@ -39,6 +39,7 @@ namespace gearfem::commands
           << " positions built at " << cycle.build_torque << " N m (" << cycle.dofs << " DoFs)\n";
       if (ctx.validate_only)
         return;
+      const double cpu_setup = process_cpu_seconds(); // parsing and reading the cycle
       solve::SolveRunOptions opt;
       opt.output_dir = ctx.output_dir;
       opt.input_name = ctx.input_file.filename().string();
@@ -58,7 +59,9 @@ namespace gearfem::commands
           std::ostringstream cost;
           cost << std::setprecision(6) << "{\"condensed\": true, \"contact_seconds\": " << r.seconds.at("contact")
                << ", \"post_seconds\": " << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
-               << ", \"positions\": " << r.results.sweep.n_rows() << "}";
+               << ", \"positions\": " << r.results.sweep.n_rows() << ", \"dofs\": " << cycle.dofs
+               << ", \"peak_memory_mb\": " << peak_memory_mb() << ", \"cpu_setup_seconds\": " << cpu_setup
+               << ", \"cpu_sweep_seconds\": " << process_cpu_seconds() - cpu_setup << "}";
           ctx.outcome->record_members.emplace_back("cost", cost.str());
         }
     }

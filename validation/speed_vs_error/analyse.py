@@ -24,7 +24,7 @@ import sys
 
 import numpy as np
 
-from pairs import ANALYTICAL, PAIRS, fe_candidates
+from pairs import CONDENSED, ANALYTICAL, PAIRS, fe_candidates
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 METRICS = [("mean_ste", "mean STE"), ("pp_ste", "peak-to-peak STE"), ("h1", "STE harmonic 1"),
@@ -79,6 +79,17 @@ def fe_metrics(d, pair):
                 wall_setup=c["setup_seconds"])
     if "error_estimate" in run:
         cost["error_estimate"] = run["error_estimate"]
+    return res, cost
+
+
+def condensed_metrics(d, pair):
+    """A condensed rung: the re-solve's metrics; its cycle is the re-solve's CPU time, its set-up
+    the `gearfem condense` run's (meshing, factorising and condensing the cycle)."""
+    res, cost = fe_metrics(d, pair)
+    c = read_cost(d)
+    cost["setup"] = c.get("condense_cpu", float("nan"))
+    cost["wall_setup"] = c.get("condense_wall", float("nan"))
+    cost["memory"] = max(c.get("condense_rss_mb", 0.0), c.get("rss_mb", 0.0))
     return res, cost
 
 
@@ -149,6 +160,10 @@ def collect(out):
                                                           memory=run["cost"]["peak_memory_mb"]))
             else:
                 data[key][name] = (label, group) + fe_metrics(d, pair)
+        for name, (label, group, _) in CONDENSED.items():
+            d = os.path.join(pd, name)
+            if os.path.exists(os.path.join(d, "done")):
+                data[key][name] = (label, group) + condensed_metrics(d, pair)
         for name, (label, group) in ANALYTICAL.items():
             d = os.path.join(pd, name)
             if not os.path.exists(os.path.join(d, "done")):
@@ -219,7 +234,8 @@ def write_table(data, err, path):
              "(full gears, Q2, Lagrange, h_contact 0.05 mm, h_fillet 0.15 mm). `cycle`: CPU time of one "
              "40-position cycle [s] (the machine was shared; the wall time of the FE sweep is in the next "
              "column); `set-up`: CPU time of parsing, meshing, assembly and factorisation [s] (calibrated: "
-             "the fit plus the reference FE of the two training torques); memory: peak resident set [MB]. "
+             "the fit plus the reference FE of the two training torques; condensed: the `gearfem condense` run); "
+             "memory: peak resident set [MB]. "
              "Harmonic errors are relative to the reference's first-harmonic amplitude. "
              "Analytical rungs: the library's own timing of the evaluation (wall, in-process). "
              "`–`: the rung has no such output.", ""]
@@ -328,7 +344,7 @@ def plots(data, err, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     markers = {"FE mesh": "o", "FE element": "s", "FE method": "D", "FE sector": "^", "analytical": "v",
-               "calibrated": "*"}
+               "calibrated": "*", "FE condensed": "P"}
     pairs = [k for k in err]
     for m, label in METRICS:
         fig, axes = plt.subplots(1, len(pairs), figsize=(5.2 * len(pairs), 4.6), squeeze=False)

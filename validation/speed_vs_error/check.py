@@ -7,11 +7,33 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from analyse import METRICS, collect, errors  # noqa: E402
-from pairs import ANALYTICAL, PAIRS, fe_candidates  # noqa: E402
+from analyse import METRICS, collect, errors, read_csv  # noqa: E402
+from pairs import ANALYTICAL, CONDENSED, PAIRS, fe_candidates  # noqa: E402
 from vcheck import Checks  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def condensed_against_full(c, t, out, key, name, base, have):
+    """A condensed cycle (built at the largest torque) against the full FE rung it condenses,
+    position by position at the three torques: the bounds of docs/model-choice.md."""
+    a = read_csv(os.path.join(out, key, name, "out", "sweep.csv"))
+    b = read_csv(os.path.join(out, key, base, "out", "sweep.csv"))
+    ste, root = 0.0, 0.0
+    for T in PAIRS[key]["torques"]:
+        ma, mb = np.isclose(a["torque"], T), np.isclose(b["torque"], T)
+        d = np.abs(a["STE"][ma] - b["STE"][mb])
+        ste = max(ste, d.max() / np.abs(b["STE"][mb]).mean())
+        for g in ("pinion", "gear"):
+            s = b[f"root stress {g}"][mb]
+            root = max(root, np.abs(a[f"root stress {g}"][ma] - s).max() / np.abs(s).max())
+    c.at_most(f"{t}: {name} against {base}, STE at every position / mean STE", ste, 1e-3,
+              "the full FE solve of the same model (the condensation is exact at the build torque)")
+    c.at_most(f"{t}: {name} against {base}, root stress / its maximum", root, 5e-3,
+              "the full FE solve of the same model")
+    ratio = have[base][3]["cycle"] / have[name][3]["cycle"]
+    c.at_least(f"{t}: {name}, full-FE cycle CPU / condensed cycle CPU", ratio, 50.0,
+               "a condensed cycle costs milliseconds: the full FE at analytical speed")
 
 
 def main():
@@ -24,7 +46,7 @@ def main():
     for key in keys:
         pair = PAIRS[key]
         t = pair["title"]
-        expected = list(fe_candidates(pair)) + list(ANALYTICAL)  # ref_check included
+        expected = list(fe_candidates(pair)) + list(ANALYTICAL) + list(CONDENSED)  # ref_check included
         have = data.get(key, {})
         c.abs(f"{t}: rungs that ran", len([n for n in expected if n in have]), len(expected), 0,
               "every rung of pairs.py (study.py run)")
@@ -62,6 +84,9 @@ def main():
         if "iso6336" in e and e["iso6336"]["mean_k"] is not None:
             c.info(f"{t}: ISO 6336-1 c_gamma_alpha against the FE mean stiffness",
                    f"{100 * e['iso6336']['mean_k']:.3g} %", "-", "ISO's c' is an empirical mean over real gear bodies")
+        for n, (_, _, base) in CONDENSED.items():
+            if n in have and base in have:
+                condensed_against_full(c, t, out, key, n, base, have)
         # Cost ordering: the reference is the slowest FE rung per cycle, analytical rungs < 0.1 s.
         ref_cycle = have["ref"][3]["cycle"]
         if "full_default" in have:
