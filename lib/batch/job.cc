@@ -229,12 +229,19 @@ namespace gearfem::batch
   JobRecord record_invalid(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
                            const std::string &message)
   {
+    return record_failure(study, i, jobs_root, "invalid design: " + message);
+  }
+
+  JobRecord record_failure(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
+                           const std::string &message, double wall_time)
+  {
     const auto dir = jobs_root / study.designs.designs[i].id;
     std::filesystem::create_directories(dir);
     JobRecord rec;
-    rec.id      = study.designs.designs[i].id;
-    rec.status  = "failed";
-    rec.message = one_line("invalid design: " + message);
+    rec.id        = study.designs.designs[i].id;
+    rec.status    = "failed";
+    rec.message   = one_line(message);
+    rec.wall_time = wall_time;
     try
       {
         auto prm        = design_handler(study, i);
@@ -332,6 +339,7 @@ namespace gearfem::batch
         rec.key         = io::content_hash(text);
         rec.torques     = design_torques(*prm);
         write_file_atomically(dir / job_parameters_file, text);
+        test_fault_hook(rec.id);
         std::error_code ec;
         std::filesystem::remove(dir / job_record_file, ec); // a re-run replaces the old record
 

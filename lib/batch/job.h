@@ -87,4 +87,15 @@ namespace gearfem::batch
   /// found by check_designs).
   JobRecord record_invalid(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
                            const std::string &message);
+
+  /// Record design `i` as failed with `message` (its parameters and torques are written as
+  /// for a job that ran): a job whose worker process died or ran over its time limit.
+  JobRecord record_failure(const Study &study, std::size_t i, const std::filesystem::path &jobs_root,
+                           const std::string &message, double wall_time = 0);
+
+  /// The test-only fault hook: with GEARFEM_TEST_FAULT=<design id>:<segv|abort|hang> in the
+  /// environment, the job of that design crashes, aborts or never ends, so that the fault
+  /// isolation of the batch driver can be tested (tests/regression/batch_checks.sh). Does
+  /// nothing for any other design or when the variable is unset.
+  void test_fault_hook(const std::string &design_id);
 } // namespace gearfem::batch

@@ -1,5 +1,7 @@
 #include "batch/run.h"
 
+#include "batch/isolation.h"
+
 #include "base/errors.h"
 #include "base/number.h"
 #include "fem/direct_solver.h"
@@ -12,6 +14,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <memory>
 #include <set>
 #include <mutex>
 #include <thread>
@@ -102,15 +105,38 @@ namespace gearfem::batch
       std::chrono::steady_clock::time_point start_;
     };
 
+    /// One rank's jobs: in a supervised worker process (Batch/Job isolation = process) or in
+    /// this process, with one ModelCache either way.
+    class Runner
+    {
+    public:
+      Runner(const Study &study, const BatchOptions &o) : study_(study), root_(o.output_dir / jobs_folder)
+      {
+        if (study.batch.isolation)
+          supervisor_ = std::make_unique<JobSupervisor>(study, o.input_file, o.output_dir);
+      }
+      JobRecord run(std::size_t i)
+      {
+        return supervisor_ ? supervisor_->run(i) : run_job(study_, i, root_, &cache_);
+      }
+
+    private:
+      const Study &study_;
+      std::filesystem::path root_;
+      ModelCache cache_;
+      std::unique_ptr<JobSupervisor> supervisor_;
+    };
+
     /// Rank 0: the manager thread (if there are other ranks) and, if the MPI library allows
     /// it, a worker in the main thread.
-    void manage(const Study &study, const MpiSession &mpi, const std::filesystem::path &root,
+    void manage(const Study &study, const MpiSession &mpi, const BatchOptions &options,
                 const std::vector<int> &todo, const std::vector<std::string> &keys, Reporter &reporter)
     {
       Queue queue(todo, keys);
       std::map<int, std::string> rank_key; // model key of each rank's last job
-      const bool local_worker = mpi.size() == 1 || mpi.thread_multiple();
-      if (local_worker)
+      // A supervised worker process makes no MPI call in this process: rank 0 can always work.
+      const bool local_worker = mpi.size() == 1 || mpi.thread_multiple() || study.batch.isolation;
+      if (local_worker && !study.batch.isolation)
         fem::initialize_petsc(); // not concurrently with the manager thread's MPI calls
       std::thread manager;
       if (mpi.size() > 1)
@@ -140,11 +166,11 @@ namespace gearfem::batch
       if (local_worker)
         try
           {
-            ModelCache cache;
+            Runner runner(study, options);
             std::string key;
             for (int j = queue.take(key); j >= 0; j = queue.take(key))
               {
-                const JobRecord rec = run_job(study, std::size_t(j), root, &cache);
+                const JobRecord rec = runner.run(std::size_t(j));
                 reporter.finished(j, rec.ok(), 0, rec.wall_time, rec.shared_model);
               }
           }
@@ -158,10 +184,10 @@ namespace gearfem::batch
         std::rethrow_exception(error);
     }
 
-    void work(const Study &study, const std::filesystem::path &root)
+    void work(const Study &study, const BatchOptions &options)
     {
       double msg[4] = {-1, 0, 0, 0};
-      ModelCache cache;
+      Runner runner(study, options);
       while (true)
         {
           MPI_Send(msg, 4, MPI_DOUBLE, 0, tag_ready, MPI_COMM_WORLD);
@@ -169,7 +195,7 @@ namespace gearfem::batch
           MPI_Recv(&job, 1, MPI_INT, 0, tag_job, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
           if (job < 0)
             return;
-          const JobRecord rec = run_job(study, std::size_t(job), root, &cache);
+          const JobRecord rec = runner.run(std::size_t(job));
           msg[0] = job, msg[1] = rec.ok() ? 1 : 0, msg[2] = rec.wall_time, msg[3] = rec.shared_model ? 1 : 0;
         }
     }
@@ -290,7 +316,7 @@ namespace gearfem::batch
           try
             {
               Reporter reporter(out, study, root, todo.size());
-              manage(study, mpi, root, todo, keys, reporter);
+              manage(study, mpi, o, todo, keys, reporter);
               r.ran = todo.size();
             }
           catch (...)
@@ -298,7 +324,7 @@ namespace gearfem::batch
               error = std::current_exception();
             }
         else
-          work(study, root);
+          work(study, o);
       }
 
     int status = 0;

@@ -18,6 +18,9 @@
 // relief with Contact/Micro-geometry = gap), which then re-uses that model.
 //
 // Each job runs the serial chain on its own (MPI_COMM_SELF; PETSc's world is COMM_SELF).
+// With Batch/Job isolation = process (the default) the chain runs in one supervised worker
+// process per rank (batch/isolation.h): a job that crashes or runs over its time limit is a
+// failed job, not the end of the batch.
 #include "batch/aggregate.h"
 #include "batch/study.h"
 
@@ -59,6 +62,8 @@ namespace gearfem::batch
     std::ostream *out = nullptr; ///< rank 0's console; other ranks pass nullptr
     int slice = 1, slices = 1;  ///< run only designs i with i % slices == slice - 1
     bool merge_only = false;    ///< run nothing: aggregate the job records found
+    /// The study file: a worker process (Batch/Job isolation = process) reads it again.
+    std::filesystem::path input_file;
   };
 
   struct BatchOutcome

@@ -13,6 +13,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -127,6 +128,15 @@ namespace gearfem::batch
                       "cycle cannot serve (other positions, contact beyond the stored candidates) falls back to "
                       "the full solve; the job record says which route ran. off: a full solve per design. "
                       "Units: none.");
+    prm.declare_entry("Job isolation", "process", Selection("process|none"),
+                      "process: each rank runs its jobs in a supervised worker process (started once, kept from job "
+                      "to job with its factorised model): a job that crashes it (a signal such as SIGSEGV), makes it "
+                      "exit or runs over `Job time limit` is recorded as failed with the signal or the limit, and the "
+                      "other jobs and the merge go on. none: jobs run in the rank's own process (a crash ends the "
+                      "whole batch). Units: none.");
+    prm.declare_entry("Job time limit", "0", Double(0),
+                      "Wall time after which a job is stopped (its worker process killed) and recorded as failed; "
+                      "0: no limit. Needs Job isolation = process. Units: s. Allowed: 0 (none) or 1 to 1e7.");
     prm.leave_subsection();
   }
 
@@ -145,7 +155,14 @@ namespace gearfem::batch
     const int seed = params::get_integer(prm, "Seed");
     b.write_vtu = params::get_bool(prm, "Write VTU");
     b.condensed = prm.get("Condensed cycle") == "auto";
+    b.isolation = prm.get("Job isolation") == "process";
+    b.job_time_limit = params::get_double(prm, "Job time limit");
     prm.leave_subsection();
+    if (!std::isfinite(b.job_time_limit) || (b.job_time_limit != 0 && (b.job_time_limit < 1 || b.job_time_limit > 1e7)))
+      throw InputError("Batch/Job time limit", to_string_g(b.job_time_limit) + " s", "0 (none) or 1 to 1e7 s");
+    if (b.job_time_limit > 0 && !b.isolation)
+      throw InputError("Batch/Job time limit", to_string_g(b.job_time_limit) + " s", "0 with Batch/Job isolation = none",
+                       "a job can only be stopped in a worker process (Job isolation = process)");
     if (seed < 0)
       throw InputError("Batch/Seed", std::to_string(seed), ">= 0");
     b.seed = (unsigned long)seed;

@@ -41,6 +41,12 @@ namespace gearfem::batch
     /// the gap route) and together ask for at least 3 torque sweeps are re-solved on one
     /// condensed cycle per rank (condensed/cycle.h) instead of a full solve each.
     bool condensed = true;
+    /// `Job isolation = process`: each rank runs its jobs in a supervised worker process
+    /// (batch/isolation.h), so that a crash or time-out is one failed job; `none`: in the
+    /// rank's own process (a crash ends the batch).
+    bool isolation = true;
+    /// `Job time limit` [s]: a job running longer is killed and recorded as failed; 0: none.
+    double job_time_limit = 0;
   };
 
   void declare_batch_parameters(dealii::ParameterHandler &prm);

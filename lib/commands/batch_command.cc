@@ -4,6 +4,7 @@
 // finished jobs; a failed design is recorded and the batch goes on (docs/batch.md).
 #include "base/atomic_file.h"
 #include "base/errors.h"
+#include "batch/isolation.h"
 #include "batch/run.h"
 #include "batch/study.h"
 #include "commands/command.h"
@@ -13,6 +14,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <optional>
@@ -77,8 +79,26 @@ namespace gearfem::commands
         }
     }
 
+    /// `--batch-worker IN,OUT,PARENT`: the supervised worker process of one rank.
+    void serve(dealii::ParameterHandler &prm, const RunContext &ctx)
+    {
+      ctx.outcome->write_record = false; // the batch's rank 0 writes run.json
+      dealii::MultithreadInfo::set_thread_limit(1);
+      int in = -1, out = -1;
+      long parent = -1;
+      if (std::sscanf(ctx.batch_worker.c_str(), "%d,%d,%ld", &in, &out, &parent) != 3 || in < 0 || out < 0 || parent <= 0)
+        throw InputError("--batch-worker", ctx.batch_worker, "IN,OUT,PARENT (internal to gearfem batch)");
+      const batch::Study study = batch::load_study(prm, ctx.input_file);
+      batch::serve_jobs(study, ctx.output_dir / batch::jobs_folder, in, out, pid_t(parent));
+    }
+
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
+      if (!ctx.batch_worker.empty())
+        {
+          serve(prm, ctx);
+          return;
+        }
       batch::MpiSession mpi;
       // Each rank runs the serial chain: one thread per rank (the ranks are the parallelism).
       dealii::MultithreadInfo::set_thread_limit(1);
@@ -103,6 +123,7 @@ namespace gearfem::commands
       opt.out        = out;
       opt.slice = ctx.slice, opt.slices = ctx.slices;
       opt.merge_only = ctx.merge;
+      opt.input_file = ctx.input_file;
       const batch::BatchOutcome r = batch::run_batch(*study, mpi, opt);
       // Only rank 0's exit status carries the result (mpirun returns it). The other ranks
       // exit with 0: mpirun aborts the whole job as soon as one rank exits non-zero, which
@@ -134,6 +155,8 @@ namespace gearfem::commands
                     "Writes jobs/<design id>/{results.h5, design.prm, job.txt} and batch.csv,\n"
                     "batch.h5 (one row per design x torque). Re-running the same study skips the\n"
                     "finished jobs; a failed design is recorded in the status column.\n"
+                    "Each rank runs its jobs in a supervised worker process (Batch/Job isolation):\n"
+                    "a design that crashes it or runs over Batch/Job time limit is one failed job.\n"
                     "Exit status: 0 all jobs succeeded; 2 bad input (unknown parameter path,\n"
                     "malformed table: nothing runs); 4 some jobs failed or did not run.\n"
                     "Sample runs:\n"

@@ -140,6 +140,12 @@ namespace gearfem::commands
               ctx.slices = parse_int("--slice", v.substr(slash + 1), 1, 1000000);
               ctx.slice  = parse_int("--slice", v.substr(0, slash), 1, ctx.slices);
             }
+          else if (a == "--batch-worker") // internal: started by a batch rank (batch/isolation.h)
+            {
+              if (i + 1 >= argc)
+                throw InputError("--batch-worker", "(missing)", "IN,OUT,PARENT (internal to gearfem batch)");
+              ctx.batch_worker = argv[++i];
+            }
           else if (a == "--print-parameters")
             {
               o.print_parameters = true;
@@ -222,6 +228,8 @@ namespace gearfem::commands
         throw InputError("--resume", "with --condensed", "a full solve", "a condensed run keeps no journal");
       if ((ctx.merge || ctx.slices > 1) && cmd.name != "batch")
         throw InputError(ctx.merge ? "--merge" : "--slice", cmd.name, "the batch command");
+      if (!ctx.batch_worker.empty() && (cmd.name != "batch" || ctx.merge || ctx.slices > 1 || ctx.validate_only))
+        throw InputError("--batch-worker", cmd.name, "the batch command alone", "it is internal to gearfem batch");
       dealii::ParameterHandler prm;
       cmd.declare(prm);
       declare_output(prm);

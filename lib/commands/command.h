@@ -35,6 +35,9 @@ namespace gearfem::commands
     bool merge = false;
     /// `--slice K/N` (batch): run only the designs i with i % N == K - 1.
     int slice = 1, slices = 1;
+    /// `--batch-worker IN,OUT,PARENT` (batch, internal): run as the supervised worker process
+    /// of a batch rank (batch/isolation.h), reading job indices from fd IN.
+    std::string batch_worker;
     /// What the command reports back to the CLI (a command may change it; the CLI starts
     /// it at 0 / true).
     struct Outcome

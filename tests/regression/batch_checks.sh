@@ -20,6 +20,12 @@
 #                                            the three sharing designs run on one condensed cycle
 #                                            (job.txt route) within 0.1 % STE and 0.5 % root
 #                                            stress of those fresh solves
+#   batch_checks.sh isolation GEARFEM SRC_DIR  a design that crashes its worker on purpose
+#                                            (GEARFEM_TEST_FAULT=shift:segv, and :abort under
+#                                            mpirun -np 2) and one that hangs past Batch/Job time
+#                                            limit are failed jobs naming the signal or the limit;
+#                                            the others finish, equal to a run without the fault
+#                                            and to Job isolation = none, the merge runs, exit 4
 #   batch_checks.sh bad     GEARFEM SRC_DIR  unknown parameter path, malformed row, value that
 #                                            is not a number: exit 2 naming column and row,
 #                                            before any job (no jobs folder), also under mpirun
@@ -273,6 +279,59 @@ for j in ("none", "short", "long", "soft"):
             assert d <= tol, (j, name, x[i], y[i])
 print("condensed cycle: worst relative differences from fresh solves", worst)
 PY
+    ;;
+  isolation)
+    study designs.csv
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/clean" > "$work/clean.log" 2>&1 ||
+      { cat "$work/clean.log"; fail "batch without a fault failed"; }
+    cp "$work/study.prm" "$work/inproc.prm"
+    printf 'subsection Batch\n  set Job isolation = none\nend\n' >> "$work/inproc.prm"
+    "$gearfem" batch "$work/inproc.prm" --output-dir "$work/inproc" > "$work/inproc.log" 2>&1 ||
+      { cat "$work/inproc.log"; fail "batch with Job isolation = none failed"; }
+    # faulty RUN FAULT [mpirun -np 2]: the batch with one faulty design in $work/RUN
+    faulty() {
+      local run=$1 fault=$2; shift 2
+      GEARFEM_TEST_FAULT=$fault timeout 240 "$@" "$gearfem" batch "$work/${prm:-study.prm}" --output-dir "$work/$run" \
+        > "$work/$run.log" 2>&1
+      local rc=$?
+      cat "$work/$run.log"
+      [ $rc -eq 4 ] || fail "$run: exit status $rc (expected 4: some jobs failed)"
+      [ -s "$work/$run/batch.csv" ] || fail "$run: no merged batch.csv"
+      pgrep -f -- "--batch-worker" > /dev/null && fail "$run: a worker process outlived the batch"
+      return 0
+    }
+    faulty segv shift:segv
+    faulty abort base:abort mpirun -np 2
+    printf 'subsection Batch\n  set Job time limit = 3\nend\n' >> "$work/study.prm"
+    faulty hang soft:hang
+    /usr/bin/python3 - "$work" <<'PY' || fail "the faulty batches do not record the faults as said"
+import csv, sys
+w = sys.argv[1]
+def table(run):
+    r = list(csv.reader(open(f"{w}/{run}/batch.csv")))
+    h, rows = r[0], r[1:]
+    out = {}
+    for row in rows:
+        out.setdefault(row[h.index("id [text]")], []).append(dict(zip(h, row)))
+    return out
+clean, inproc = table("clean"), table("inproc")
+for run, bad, words in (("segv", "shift", ("crashed", "SIGSEGV")), ("abort", "base", ("crashed", "SIGABRT")),
+                        ("hang", "soft", ("Job time limit = 3 s", "killed"))):
+    t = table(run)
+    st = t[bad][0]["status [text]"]
+    assert st.startswith("failed: ") and all(x in st for x in words), (run, st)
+    assert [r["torque [N m]"] for r in t[bad]] == ["100", "200"] and t[bad][0]["STE mean [um]"] == "", run
+    for d, rows in t.items():
+        if d == bad:
+            continue
+        for r, c, i in zip(rows, clean[d], inproc[d]):
+            assert r["status [text]"] == "ok", (run, d, r["status [text]"])
+            for k, v in r.items():
+                if k != "wall time [s]" and not k.endswith("[text]"):
+                    assert float(v) == float(c[k]) == float(i[k]), (run, d, k, v, c[k], i[k])
+print("segv, abort (np 2) and hang: one failed job each naming the fault; the others equal the clean run")
+PY
+    grep -q "1 failed" "$work/segv.log" || fail "segv: the summary does not count one failure"
     ;;
   bad)
     check() { # TABLE EXPECT...: exit 2, each EXPECT in stderr, no job started
