@@ -76,7 +76,7 @@ def fe_metrics(d, pair):
     # CPU time (the machine is shared: wall time is reported, CPU time is what is compared).
     cost = dict(cycle=c["cpu_sweep_seconds"] / n, setup=c["cpu_setup_seconds"], memory=c["peak_memory_mb"],
                 dofs=c["dofs"], wall_cycle=(c["contact_seconds"] + c["post_seconds"]) / n,
-                wall_setup=c["setup_seconds"])
+                wall_setup=c.get("setup_seconds", float("nan")))
     if "error_estimate" in run:
         cost["error_estimate"] = run["error_estimate"]
     return res, cost
