@@ -18,12 +18,21 @@ namespace gearfem::dynamics
 {
   void ResponseOptions::check() const
   {
-    require_greater("Dynamics/Analysis/Periods per speed", max_periods, 0.0);
-    require_greater("Dynamics/Analysis/Recorded periods", record_periods, 0.0);
+    // Bounds of the work of one speed: 1e5 mesh periods settle any damping ratio >= 1e-4
+    // (a transient decays as exp(-2 pi zeta n)); 1e4 samples resolve any tooth-pass harmonic
+    // that matters; the record holds at most 1e7 samples (80 MB per channel).
+    require_range("Dynamics/Analysis/Periods per speed", max_periods, 1, 100000);
+    require_range("Dynamics/Analysis/Recorded periods", record_periods, 1, 100000);
     if (record_periods > max_periods)
       throw InputError("Dynamics/Analysis/Recorded periods", std::to_string(record_periods),
                        "<= Periods per speed (" + std::to_string(max_periods) + ")");
-    require_greater("Dynamics/Analysis/Samples per period", samples_per_period, 3.0);
+    require_range("Dynamics/Analysis/Samples per period", samples_per_period, 4, 10000);
+    if (double(record_periods) * samples_per_period > 1e7)
+      throw InputError("Dynamics/Analysis/Recorded periods", std::to_string(record_periods) + " (x Samples per period " +
+                         std::to_string(samples_per_period) + ")",
+                       "a record of at most 1e7 samples");
+    if (steps_per_period > 1000000)
+      throw InputError("Dynamics/Integrator/Steps per period", std::to_string(steps_per_period), "0 to 1e6");
     if (steps_per_period < 0)
       throw InputError("Dynamics/Analysis/Steps per period", std::to_string(steps_per_period),
                        ">= 0 (0: use Integrator/Time step)");

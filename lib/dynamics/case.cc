@@ -70,8 +70,8 @@ namespace gearfem::dynamics
                          "< Sweep maximum speed");
       }
     if (run_sweep)
-      require_greater("Dynamics/Analysis/Number of speeds", sweep_points, 1.0);
-    require_greater("Dynamics/Analysis/Threads", threads, 0.0);
+      require_range("Dynamics/Analysis/Number of speeds", sweep_points, 2, 100000);
+    require_range("Dynamics/Analysis/Threads", threads, 1, 1024);
     if (model != ModelKind::kahraman_singh)
       {
         require_greater("Dynamics/Operating/Pinion speed", speed, 0.0, "rad/s");

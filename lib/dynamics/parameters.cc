@@ -172,7 +172,7 @@ namespace gearfem::dynamics
 
     prm.enter_subsection("Integrator");
     prm.declare_entry("Method", "RK4", Selection("RK4|DOPRI5|SDIRK3"), "Stepper.");
-    prm.declare_entry("Steps per period", "128", Integer(), "Fixed-step methods: steps per mesh period [-].");
+    prm.declare_entry("Steps per period", "128", Integer(), "Fixed-step methods: steps per mesh period [-]. Allowed: 1 to 1e6.");
     prm.declare_entry("Relative tolerance", "1e-8", Double(), "DOPRI5 [-]. Allowed: 1e-14 to 1e-2.");
     prm.declare_entry("Absolute tolerance", "1e-14", Double(),
                       "DOPRI5; state units (m, m/s, rad; dimensionless in Kahraman-Singh mode). Allowed: > 0 "
@@ -183,16 +183,16 @@ namespace gearfem::dynamics
     prm.leave_subsection();
 
     prm.enter_subsection("Analysis");
-    prm.declare_entry("Periods per speed", "300", Integer(), "Transient + record, at most [-].");
-    prm.declare_entry("Recorded periods", "32", Integer(), "Steady-state record [-].");
-    prm.declare_entry("Samples per period", "64", Integer(), "Output samples per mesh period [-].");
+    prm.declare_entry("Periods per speed", "300", Integer(), "Transient + record, at most [-]. Allowed: 1 to 100000 (settles any damping ratio >= 1e-4).");
+    prm.declare_entry("Recorded periods", "32", Integer(), "Steady-state record [-]. Allowed: 1 to Periods per speed; Recorded periods x Samples per period <= 1e7.");
+    prm.declare_entry("Samples per period", "64", Integer(), "Output samples per mesh period [-]. Allowed: 4 to 10000.");
     prm.declare_entry("Steady-state tolerance", "1e-5", Double(),
                       "Poincare-sample change relative to the response scale [-].");
     prm.declare_entry("Sweep minimum speed", "500", Double(),
                       "Pinion speed. Units: rpm (Omega [-] in Kahraman-Singh mode).");
     prm.declare_entry("Sweep maximum speed", "10000", Double(), "Units: rpm (Omega [-] in KS mode).");
-    prm.declare_entry("Number of speeds", "100", Integer(), "Per direction [-].");
-    prm.declare_entry("Threads", "2", Integer(), "Threads for the up/down sweeps [-].");
+    prm.declare_entry("Number of speeds", "100", Integer(), "Per direction [-]. Allowed: 2 to 100000.");
+    prm.declare_entry("Threads", "2", Integer(), "Threads for the up/down sweeps [-]. Allowed: 1 to 1024.");
     prm.declare_entry("Portrait speeds", "", List(Double(0)),
                       "Extra time responses at these pinion speeds, each from the static state: "
                       "phase portrait, Poincare section and spectrum per speed (portrait_<k>_*.csv, "

@@ -1,23 +1,28 @@
 #!/usr/bin/python3
-"""Mutation fuzzer for gearfem input files.
+"""Mutation fuzzer for gearfem input files, over every command.
 
-Mutates every inputs/*.prm with a fixed seed and runs each mutant through
-`gearfem <command> --validate`; a fraction also gets a real run (only for the commands
-that finish in about a second on the example cases; the others are validated only).
-Every exit must be 0 or 2 (exit 3, a solver failure, is allowed for real runs only):
-never 1, a signal, or a hang past the time limit. An exit 2 must print a
-"gearfem: error:" line and no "internal error"; an exit 0 of a real run must leave no
-nan/inf in its CSV files.
+Mutates every inputs/*.prm and the small seeds of tests/fuzz/seeds/ (one per command that
+has no input cheap enough to run: solve, condense, batch, optimise, calibrate) with a fixed
+seed, and runs each mutant through `gearfem <command> --validate`. A fraction of the mutants
+of the cheap inputs (the seeds, and the inputs that finish in seconds: CHEAP) also get a real
+run; mutants of the solve seed are re-solved on a condensed cycle (`--condensed`) half the
+time. The set-up solves and condenses the solve seed once (the calibrate seed's results file,
+@RESULTS@, and the cycle).
+
+Every exit must be 0 or 2, or 3 for a real run; never 1, a signal, or a run past the time
+limit. An exit 2 or 3 must print a "gearfem: error:" line (the parameter, or the solver's
+reason) and no "internal error"; an exit 0 of a real run must leave no nan/inf in its CSV
+files.
 
 Mutations: a number scaled by 0, -1, 1e6, 1e-6, or shifted by +-1; a special value
 (${X}, 1e-320, 1e400, inf, nan, {1|2}, 0x10, 1.5x, empty, a long number, true); a deleted,
 duplicated or junk line; a stray `end` or `subsection`.
 
   tests/fuzz/fuzz_inputs.py --gearfem build/app/gearfem --src . --mutants 300 --seed 13
-  scripts/fuzz_inputs [N] [SEED]     (the longer run)
+  scripts/fuzz_inputs [N] [SEED]     (the long run: 10 000 mutants, 30 % of the cheap ones run)
 
 Prints one line per failing mutant (and keeps its file in --keep), then a summary with the
-exit counts. Exit status 0 when every mutant passed, 1 otherwise.
+exit counts per command. Exit status 0 when every mutant passed, 1 otherwise.
 """
 import argparse
 import collections
@@ -40,10 +45,13 @@ SPECIAL = ["${X}", "1e-320", "-1e-320", "1e400", "-1e400", "inf", "nan", "{1|2}"
 JUNK = ["garbage line", "set Nonexistent entry = 3", "set = 1", "=", "set Module", "subsection",
         "end end", "set Face width == 2", "include other.prm", "\tset\t", "#" * 50,
         "subsection Rack\nset Module = ${M}\nend"]
-# Commands whose real run on the example cases takes a few seconds (mostly the plots), and
-# the inputs excluded from real runs because they take much longer (B-spline rack: ~30 s).
-FAST_RUN = {"profile", "rate"}
-SLOW_INPUTS = ("bspline",)
+# Inputs whose real run takes a few seconds (measured on the 2-core machine): the seeds, and
+# these. The others (FE sweeps of 10-40 s, the B-spline rack) are validated only.
+CHEAP = {"fzg_c.prm", "seed000_32_60.prm", "seed001_23_69.prm", "seed003_19_55.prm", "tip_relief.prm",
+         "tip_rounding.prm", "seed001_23_69_rate.prm", "seed001_23_69_rate_thesis_kh.prm",
+         "dynamics_kahraman_singh.prm", "dynamics_seed000_ricker.prm", "dynamics_seed000_table1.prm",
+         "dynamics_seed004.prm", "seed001_gearbox.prm", "seed001_gearbox_thesis_stresses.prm",
+         "mesh_demo.prm", "condense_demo.prm", "tip_relief_opt.prm"}
 
 
 def command_of(path):
@@ -112,103 +120,150 @@ def csv_has_nonfinite(folder):
     return None
 
 
+def set_up(gearfem, seeds, work):
+    """Solve and condense the solve seed once: the calibrate seed's results file and the
+    cycle of the --condensed mutants. Returns {placeholder: path}."""
+    solve = os.path.join(seeds, "solve_small.prm")
+    for cmd, out in (("solve", "base"), ("condense", "cycle")):
+        p = subprocess.run([gearfem, cmd, solve, "--output-dir", os.path.join(work, out)],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300, cwd=work)
+        if p.returncode != 0:
+            raise SystemExit("fuzz set-up: gearfem %s %s failed:\n%s" % (cmd, solve, p.stdout.decode()[-2000:]))
+    return {"@RESULTS@": os.path.join(work, "base", "results.h5"),
+            "@CYCLE@": os.path.join(work, "cycle", "condensed.h5")}
+
+
+def classify(rc, err, mode, out):
+    """The problem of one call, or None."""
+    if rc == "timeout":
+        return "over its time limit"
+    if rc < 0:
+        return "signal %d" % -rc
+    if rc not in (0, 2) and not (mode == "run" and rc == 3):
+        return "exit %d" % rc
+    if rc in (2, 3) and ("gearfem: error:" not in err or "internal error" in err):
+        return "exit %d without a named error" % rc
+    if rc == 0 and mode == "run":
+        bad = csv_has_nonfinite(out)
+        if bad:
+            return "nan/inf in " + os.path.basename(bad)
+    return None
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--gearfem", required=True)
-    ap.add_argument("--src", required=True, help="source folder (inputs/*.prm are mutated)")
+    ap.add_argument("--src", required=True, help="source folder (inputs/*.prm and tests/fuzz/seeds/*.prm are mutated)")
     ap.add_argument("--mutants", type=int, default=300)
     ap.add_argument("--seed", type=int, default=13)
     ap.add_argument("--run-fraction", type=float, default=0.1,
-                    help="fraction of mutants of the fast commands that also get a real run")
-    ap.add_argument("--timeout", type=float, default=30.0, help="seconds per gearfem call")
+                    help="fraction of the mutants of the cheap inputs that also get a real run")
+    ap.add_argument("--timeout", type=float, default=60.0, help="time limit [s] of one --validate call")
+    ap.add_argument("--run-timeout", type=float, default=120.0, help="time limit [s] of one real run")
     ap.add_argument("--jobs", type=int, default=2, help="gearfem processes at a time")
     ap.add_argument("--keep", default="", help="folder where failing mutants are copied")
     args = ap.parse_args()
 
     gearfem = os.path.abspath(args.gearfem)
-    inputs = sorted(glob.glob(os.path.join(args.src, "inputs", "*.prm")))
+    seeds = os.path.join(os.path.abspath(args.src), "tests", "fuzz", "seeds")
+    inputs = sorted(glob.glob(os.path.join(args.src, "inputs", "*.prm"))) + sorted(glob.glob(os.path.join(seeds, "*.prm")))
     if not inputs:
         print("no inputs found under", args.src)
         return 1
-    texts = {f: open(f).read().split("\n") for f in inputs}
-    rng = random.Random(args.seed)
     work = tempfile.mkdtemp(prefix="gearfem_fuzz.")
-    exits = collections.Counter()
-    by_command = collections.Counter()
-    failures = []
-    lock = threading.Lock()
     t0 = time.time()
-
-    # All mutants first (deterministic for a seed), then the calls, `--jobs` at a time.
-    jobs = []
-    for k in range(args.mutants):
-        src = inputs[k % len(inputs)]
-        cmd = command_of(src)
-        lines, what = mutate(texts[src], rng)
-        if rng.random() < 0.2:  # sometimes two mutations at once
-            lines, what2 = mutate(lines, rng)
-            what += "; " + what2
-        mutant = os.path.join(work, "m%04d_%s" % (k, os.path.basename(src)))
-        with open(mutant, "w") as f:
-            f.write("\n".join(lines))
-        real = (cmd[0] in FAST_RUN and not any(w in src for w in SLOW_INPUTS) and
-                rng.random() < args.run_fraction)
-        jobs.append((k, src, cmd, what, mutant, real))
-
-    def execute(job):
-        k, src, cmd, what, mutant, real = job
-        calls = [("validate", [gearfem] + cmd + ["--validate", mutant])]
-        out = os.path.join(work, "out%04d" % k)
-        if real:
-            calls.append(("run", [gearfem] + cmd + [mutant, "--output-dir", out]))
-        for mode, argv in calls:
-            try:
-                p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                   timeout=args.timeout, cwd=work,
-                                   env=dict(os.environ, MPLBACKEND="Agg"))
-                rc = p.returncode
-                err = p.stderr.decode(errors="replace")
-            except subprocess.TimeoutExpired:
-                rc, err = "timeout", ""
-            problem = None
-            if rc == "timeout":
-                problem = "hang past %.0f s" % args.timeout
-            elif rc < 0:
-                problem = "signal %d" % -rc
-            elif rc not in (0, 2) and not (mode == "run" and rc == 3):
-                problem = "exit %d" % rc
-            elif rc == 2 and ("gearfem: error:" not in err or "internal error" in err):
-                problem = "exit 2 without a named error"
-            elif rc == 0 and mode == "run":
-                bad = csv_has_nonfinite(out)
-                if bad:
-                    problem = "nan/inf in " + os.path.basename(bad)
-            if mode == "run":
-                shutil.rmtree(out, ignore_errors=True)
-            with lock:
-                exits[rc] += 1
-                by_command[" ".join(cmd) + " " + mode] += 1
-                if problem:
-                    last = err.strip().split("\n")[-1][:200] if err.strip() else ""
-                    failures.append("%s %s [%s] %s: %s | %s" % (
-                        os.path.basename(src), mode, " ".join(cmd), what, problem, last))
-                    if args.keep:
-                        os.makedirs(args.keep, exist_ok=True)
-                        shutil.copy(mutant, args.keep)
-
     try:
+        files = set_up(gearfem, seeds, work)
+        texts = {}
+        for f in inputs:
+            t = open(f).read()
+            for k, v in files.items():
+                t = t.replace(k, v)
+            texts[f] = t.split("\n")
+        rng = random.Random(args.seed)
+        exits = collections.Counter()
+        by_command = collections.defaultdict(collections.Counter)
+        mutants_of = collections.Counter()
+        failures = []
+        lock = threading.Lock()
+        done = [0]
+
+        # All mutants first (deterministic for a seed), then the calls, `--jobs` at a time.
+        jobs = []
+        for k in range(args.mutants):
+            src = inputs[k % len(inputs)]
+            cmd = command_of(src)
+            lines, what = mutate(texts[src], rng)
+            if rng.random() < 0.2:  # sometimes two mutations at once
+                lines, what2 = mutate(lines, rng)
+                what += "; " + what2
+            mutant = os.path.join(work, "m%05d_%s" % (k, os.path.basename(src)))
+            with open(mutant, "w") as f:
+                f.write("\n".join(lines))
+            cheap = src.startswith(seeds) or os.path.basename(src) in CHEAP
+            real = cheap and rng.random() < args.run_fraction
+            extra = []
+            if os.path.basename(src) == "solve_small.prm" and rng.random() < 0.5:
+                extra = ["--condensed", files["@CYCLE@"]]
+            name = " ".join(cmd) + (" --condensed" if extra else "")
+            mutants_of[name] += 1
+            jobs.append((k, src, cmd, extra, name, what, mutant, real))
+
+        def execute(job):
+            k, src, cmd, extra, name, what, mutant, real = job
+            calls = [("validate", [gearfem] + cmd + ["--validate", mutant] + extra, args.timeout)]
+            out = os.path.join(work, "out%05d" % k)
+            if real:
+                calls.append(("run", [gearfem] + cmd + [mutant, "--output-dir", out] + extra, args.run_timeout))
+            for mode, argv, limit in calls:
+                try:
+                    p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=limit, cwd=work,
+                                       env=dict(os.environ, MPLBACKEND="Agg"))
+                    rc = p.returncode
+                    err = p.stderr.decode(errors="replace")
+                except subprocess.TimeoutExpired:
+                    rc, err = "timeout", ""
+                    subprocess.run(["pkill", "-KILL", "-f", mutant], stderr=subprocess.DEVNULL)  # its batch workers
+                problem = classify(rc, err, mode, out)
+                if mode == "run":
+                    shutil.rmtree(out, ignore_errors=True)
+                with lock:
+                    exits[rc] += 1
+                    by_command[name][(mode, rc)] += 1
+                    if problem:
+                        last = err.strip().split("\n")[-1][:200] if err.strip() else ""
+                        failures.append("%s %s [%s] %s: %s | %s" % (
+                            os.path.basename(src), mode, name, what, problem, last))
+                        if args.keep:
+                            os.makedirs(args.keep, exist_ok=True)
+                            shutil.copy(mutant, args.keep)
+            os.remove(mutant)
+            with lock:
+                done[0] += 1
+                n = done[0]
+                if args.mutants >= 1000 and n % (args.mutants // 20) == 0:
+                    el = time.time() - t0
+                    print("fuzz: %d/%d mutants, %d failing, elapsed %.0f s, ETA %.0f s" % (
+                        n, args.mutants, len(failures), el, el / n * (args.mutants - n)), flush=True)
+
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
             list(pool.map(execute, jobs))
     finally:
         shutil.rmtree(work, ignore_errors=True)
-    runs = sum(v for k, v in by_command.items() if k.endswith(" run"))
+    runs = sum(v for c in by_command.values() for (m, _), v in c.items() if m == "run")
+    calls = sum(exits.values())
     wall = time.time() - t0
     for f in sorted(failures):
         print("FAIL:", f)
-    print("fuzz: %d mutants of %d inputs (seed %d), %d calls (%d real runs) in %.1f s" % (
-        args.mutants, len(inputs), args.seed, sum(exits.values()), runs, wall))
+    print("fuzz: %d mutants of %d inputs (seed %d), %d calls, %d real runs (%.1f %% of the mutants), %.1f s" % (
+        args.mutants, len(inputs), args.seed, calls, runs, 100.0 * runs / max(1, args.mutants), wall))
     print("exits: " + ", ".join("%s: %d" % (k, v) for k, v in sorted(exits.items(), key=str)))
-    print("calls by command: " + ", ".join("%s: %d" % kv for kv in sorted(by_command.items())))
+    print("| command | mutants | --validate exits | real runs: exits |")
+    print("|---|---|---|---|")
+    for name in sorted(mutants_of):
+        c = by_command[name]
+        fmt = lambda m: ", ".join("%s: %d" % (rc, v) for (mm, rc), v in sorted(c.items(), key=str) if mm == m) or "-"
+        print("| %s | %d | %s | %s |" % (name, mutants_of[name], fmt("validate"), fmt("run")))
     print("%d failing" % len(failures))
     return 1 if failures else 0
 
