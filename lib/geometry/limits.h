@@ -19,4 +19,13 @@ namespace gearfem::geometry::limits
   void check_addendum(const std::string &entry, double h_a);         ///< [module]
   void check_face_width(const std::string &entry, double b);         ///< [m], > 0
   void check_profile_shift(const std::string &entry, double x);      ///< [module]
+
+  /// The small-strain bound of every linear-elastic contact model of gearfem: the line-contact
+  /// Hertz pressure at the pitch point with the whole torque on one pair (Johnson 1985, eq.
+  /// 4.45), p0 = sqrt(w E* / (pi R*)), w = T / (r_b1 b), must keep p0 / E* <= 5 % (p0 ~ 5 GPa
+  /// for steel, several times any yield stress). Throws InputError naming `entry` (a torque,
+  /// [N m]) and the largest torque allowed. E* [Pa] of the pair (1/E* = 1/E'_1 + 1/E'_2),
+  /// `curvature` = 1/R* at the pitch point [1/m].
+  void check_small_strain(const std::string &entry, double torque, double base_radius1, double face_width,
+                          double E_star, double curvature);
 } // namespace gearfem::geometry::limits

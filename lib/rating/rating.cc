@@ -1,4 +1,6 @@
 #include "rating/rating.h"
+
+#include "geometry/limits.h"
 #include "base/units.h"
 
 #include "analytical/from_geometry.h"
@@ -296,6 +298,13 @@ namespace gearfem::rating
   {
     check_rating_input(in);
     const RatingContext c(pair, in);
+    {
+      // The small-strain bound of the contact models (plane strain E' = E / (1 - nu^2)).
+      const double Es = 1.0 / ((1 - in.nu1 * in.nu1) / in.E1 + (1 - in.nu2 * in.nu2) / in.E2);
+      for (const double T : in.torques)
+        geometry::limits::check_small_strain("Rating/Pinion torques", T, pair.base_radius(1), c.b, Es,
+                                             pair.equivalent_curvature(0.0));
+    }
     RatingReport rep;
     rep.torques = in.torques;
     add_agma_rows(c, rep);

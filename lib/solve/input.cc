@@ -1,6 +1,8 @@
 // The `Solve` section and the whole input of `gearfem solve` (GearContactInput).
 #include "solve/input.h"
 
+#include "geometry/limits.h"
+
 #include "base/errors.h"
 #include "base/number.h"
 #include "base/units.h"
@@ -119,33 +121,14 @@ namespace gearfem::solve
   void check_small_strain(const geometry::GearPair &pair, const geometry::PairMaterial &pm,
                           const std::vector<double> &torques)
   {
-    // Line-contact Hertz estimate at the pitch point C with all the torque on one pair
-    // (Johnson 1985, eq. 4.45): p0 = sqrt(w E* / (pi R*)), w = F_n / b, F_n = T / r_b1,
-    // 1/E* = 1/E'_1 + 1/E'_2 (E' of the plane model), 1/R* = 1/rho_1 + 1/rho_2 at C.
-    // The contact strain is of the order p0 / E*; the solver is linear elastic with small
-    // strains and small rotations, so a torque for which p0 / E* exceeds 5 % (p0 ~ 5 GPa
-    // for steel, several times any yield stress) is refused, stating the largest torque.
-    const double limit = 0.05;
+    // geometry::limits::check_small_strain: p0/E* <= 5 % at the pitch point, E' of the plane model.
     const double E1 = pm.gear1.effective_modulus(pm.plane_strain);
     const double E2 = pm.gear2.effective_modulus(pm.plane_strain);
     const double Es = 1.0 / (1.0 / E1 + 1.0 / E2);
     const double b  = std::min(pair.gear(1).parameters().face_width, pair.gear(2).parameters().face_width);
     const double curvature = pair.equivalent_curvature(0.0); // 1/R* at C [1/m]
     for (const double T : torques)
-      {
-        const double w  = T / pair.base_radius(1) / b;
-        const double p0 = std::sqrt(w * Es * curvature / pi);
-        if (!(p0 / Es <= limit))
-          {
-            const double T_max = T * (limit * Es / p0) * (limit * Es / p0);
-            throw InputError("Solve/Torques", to_string_g(T) + " N m",
-                             "<= " + to_string_g(T_max) + " N m for this pair and material",
-                             "The estimated Hertz pressure at the pitch point is p0 = " +
-                               to_string_g(p0 / 1e6) + " MPa, p0/E* = " + to_string_g(100 * p0 / Es) +
-                               " %: beyond the small-strain range of the linear-elastic contact "
-                               "model (limit p0/E* <= 5 %)");
-          }
-      }
+      geometry::limits::check_small_strain("Solve/Torques", T, pair.base_radius(1), b, Es, curvature);
   }
   } // namespace
 
