@@ -4,6 +4,8 @@
 # the busy fraction of the two ranks at np = 2.
 # Usage: bench.sh [GEARFEM] [OUT]
 set -euo pipefail
+args_allowed='[^-].*'
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/args.sh"
 here=$(cd "$(dirname "$0")" && pwd)
 gearfem=${1:-$here/../../build/app/gearfem}
 out=${2:-$here/out}

@@ -8,6 +8,8 @@
 # PASS or FAIL. Without ccx it prints `calculix_peer: SKIP` and exits 77 (a skip, never a
 # PASS: nothing was compared). About 25-40 min of ccx on the shared 2-core machine.
 set -euo pipefail
+args_allowed='--jobs|--reuse|--kappas|--kappa-positions|[0-9][0-9.,:]*'
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/args.sh"
 if ! command -v "${CCX:-ccx}" > /dev/null 2>&1; then
   echo "calculix_peer: SKIP (CalculiX 'ccx' not found; install it with apt-get install -y calculix-ccx; nothing was compared)"
   exit 77

@@ -10,6 +10,7 @@
 #   validation/extreme_designs/run.sh [gearfem] [--quick]
 # --quick skips the solve runs.
 set -euo pipefail
+args_allowed='.*/gearfem'
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 gearfem="${1:-$gearfem}"
 quick="${2:-}"

@@ -13,6 +13,8 @@
 # harris_map: PASS|FAIL.
 # Not in the quick or long tier: ~25-60 min at np = 2.
 set -euo pipefail
+args_allowed='full|exact|preview|[0-9]+'
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/args.sh"
 here=$(cd "$(dirname "$0")" && pwd)
 src=$here/../..
 gearfem=${GEARFEM:-$src/build/app/gearfem}

@@ -6,6 +6,8 @@
 #   check  `check [args]`: runs <here>/check.py with /usr/bin/python3 in place of the
 #          script (exec: the last command of run.sh), so its PASS/FAIL line and status end it.
 # A failing step ends the script (set -e, pipefail) with a `<case>: FAIL (step failed ...)` line.
+_script="${BASH_SOURCE[1]}"
+source "$(dirname "${BASH_SOURCE[0]}")/args.sh" # --help, and no argument the script does not take
 here="$(cd "$(dirname "${BASH_SOURCE[1]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="${GEARFEM_BUILD_DIR:-$root/build}"

@@ -4,6 +4,8 @@
 # applied as an initial separation on the unmodified mesh. check.py compares STE and root
 # stress position by position and ends with PASS or FAIL.
 set -euo pipefail
+args_allowed='--amount|--long|--positions|[0-9][0-9.]*'
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/args.sh"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="${GEARFEM_BUILD_DIR:-$root/build}"

@@ -5,6 +5,7 @@
 #   sweeps.sh --if-missing run only the sweeps without a completed result (results/<model>.done);
 #                          validation/analytical_vs_fe and parker_dynamics use this.
 set -euo pipefail
+args_allowed='--if-missing'
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
 i=0

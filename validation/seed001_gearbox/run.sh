@@ -9,6 +9,8 @@
 # prints the figures recorded in validation/RESULTS.md and checks them (check.py: PASS/FAIL).
 #   validation/seed001_gearbox/run.sh [gearfem] [output folder]
 set -euo pipefail
+args_allowed='[^-].*'
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/args.sh"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 gearfem="${1:-${GEARFEM_BUILD_DIR:-$root/build}/app/gearfem}"

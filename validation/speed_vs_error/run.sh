@@ -9,6 +9,7 @@
 #                     alone takes about 10 min of CPU)
 # Copies table.md, which_model.md and pareto_*.png here; check.py ends with PASS or FAIL.
 set -euo pipefail
+args_allowed='--reuse|--only|--pairs|[a-z0-9_.,]+'
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
 export SPEED_VS_ERROR_PAIRS="${SPEED_VS_ERROR_PAIRS:-parker,fzg_c,seed001}"

@@ -5,6 +5,8 @@
 # the corner positions for comparison; h_contact 0.05 mm at the transitions. check.py
 # compares against the tolerances in README.md and ends with PASS or FAIL.
 set -euo pipefail
+args_allowed='--h|--gap|[0-9][0-9.]*|node|integrated'
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/args.sh"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="${GEARFEM_BUILD_DIR:-$root/build}"
