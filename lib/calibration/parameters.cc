@@ -20,6 +20,14 @@ namespace gearfem::calibration
     prm.declare_entry("Results files", "", Anything(),
                       "Comma-separated results.h5 files of `gearfem solve` for this pair (relative "
                       "to the input file). Units: none.");
+    prm.declare_entry("Condensed cycle", "", Anything(),
+                      "condensed.h5 of `gearfem condense` for this pair (relative to this file; empty: none): the "
+                      "FE STE at `Cycle torques` is re-solved on the stored cycle (about 1 ms per position, within "
+                      "0.1 % of the full FE; docs/model-choice.md) and fitted with the positions of `Results files`, "
+                      "if any. Units: none.");
+    params::declare_torques(prm, "Cycle torques", "",
+                            "Pinion torques at which the condensed cycle is sampled, within the range it was built "
+                            "for (its Condense/Torque range); empty: 6 torques spread geometrically over that range.");
     prm.declare_entry("Model", "weber-cornell", Selection("weber-cornell|potential-energy"),
                       "Analytical pair compliance that is calibrated. Units: none.");
     prm.declare_entry("Fit factors", "beam, hertz, body, corner",
@@ -52,6 +60,8 @@ namespace gearfem::calibration
     Input in;
     prm.enter_subsection("Calibration");
     in.files = dealii::Utilities::split_string_list(prm.get("Results files"), ',');
+    in.cycle = dealii::Utilities::trim(prm.get("Condensed cycle"));
+    in.cycle_torques = params::get_torques(prm, "Cycle torques", "Calibration/Cycle torques", true);
     in.model = prm.get("Model");
     const auto fit_set = dealii::Utilities::split_string_list(prm.get("Fit factors"), ',');
     const bool corner  = params::get_bool(prm, "Corner contact");
@@ -63,8 +73,11 @@ namespace gearfem::calibration
     const double b_um  = params::get_double(prm, "Backlash");
     g.backlash         = b_um >= 0 ? b_um * 1e-6 : -1.0;
     prm.leave_subsection();
-    if (in.files.empty())
-      throw InputError("Calibration/Results files", "(empty)", "at least one results.h5 of `gearfem solve`");
+    if (in.files.empty() && in.cycle.empty())
+      throw InputError("Calibration/Results files", "(empty)",
+                       "at least one results.h5 of `gearfem solve`, or a Calibration/Condensed cycle");
+    if (!in.cycle_torques.empty() && in.cycle.empty())
+      throw InputError("Calibration/Cycle torques", "(set)", "empty without a Calibration/Condensed cycle");
     if (!(rho0 >= 0))
       throw InputError("Calibration/Corner radius", to_string_g(rho0 * 1e3) + " mm", ">= 0");
     if (g.n_theta < 8)

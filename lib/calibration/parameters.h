@@ -18,6 +18,10 @@ namespace gearfem::calibration
   struct Input
   {
     std::vector<std::string> files; ///< results.h5 of `gearfem solve` (relative to the input file)
+    /// condensed.h5 of `gearfem condense` (relative to the input file; "" none): FE samples
+    /// at `cycle_torques` re-solved on it, milliseconds per position.
+    std::string cycle;
+    std::vector<double> cycle_torques; ///< [N m]; empty: 6 torques spread over the cycle's range
     std::string model;              ///< "weber-cornell" | "potential-energy"
     Options options;
   };

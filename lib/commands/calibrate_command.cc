@@ -4,6 +4,8 @@
 // (lib/io, docs/mesh-tables.md) that the dynamics module reads.
 #include "calibration/calibrate.h"
 #include "calibration/parameters.h"
+#include "condensed/cycle.h"
+#include "condensed/table.h"
 #include "base/units.h"
 #include "analytical/from_geometry.h"
 #include "base/errors.h"
@@ -17,7 +19,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <ctime>
 #include <iomanip>
 #include <map>
@@ -59,14 +63,43 @@ namespace gearfem::commands
       for (const auto &f : in.files)
         paths.push_back(std::filesystem::path(f).is_relative() ? ctx.input_file.parent_path() / f :
                                                                  std::filesystem::path(f));
-      const auto samples = calibration::read_fe_samples(paths, hash, "Calibration/Results files");
+      auto samples = calibration::read_fe_samples(paths, hash, "Calibration/Results files");
+      std::optional<condensed::CondensedCycle> cycle;
+      if (!in.cycle.empty())
+        {
+          const std::filesystem::path f = std::filesystem::path(in.cycle).is_relative() ?
+                                            ctx.input_file.parent_path() / in.cycle :
+                                            std::filesystem::path(in.cycle);
+          cycle = condensed::read_cycle(f);
+          if (cycle->geometry_hash != hash)
+            throw InputError("Calibration/Condensed cycle", f.string(), "a cycle of this pair (geometry hash " + hash + ")",
+                             "the cycle was condensed for geometry " + cycle->geometry_hash +
+                               ": refusing to calibrate against another pair");
+          out << "condensed cycle: " << f.string() << ", " << cycle->positions.size() << " positions, torques "
+              << cycle->torque_lo << " to " << cycle->torque_hi << " N m\n";
+        }
+      if (cycle)
+        for (const double T : in.cycle_torques)
+          if (!(T >= cycle->torque_lo && T <= cycle->torque_hi))
+            throw InputError("Calibration/Cycle torques", to_string_g(T) + " N m",
+                             "[" + to_string_g(cycle->torque_lo) + ", " + to_string_g(cycle->torque_hi) + "] N m",
+                             "the torque range the condensed cycle was built for (Condense/Torque range)");
+      if (ctx.validate_only)
+        return;
+      if (cycle)
+        {
+          const auto t0 = std::chrono::steady_clock::now();
+          const auto s  = condensed::ste_samples(*cycle, pair.base_radius(1), in.cycle_torques, "Calibration/Cycle torques");
+          samples.insert(samples.end(), s.begin(), s.end());
+          out << "condensed cycle: " << s.size() << " FE positions re-solved in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+        }
       std::set<double> torques;
       for (const auto &s : samples)
         torques.insert(s.torque);
       out << "calibrate: " << samples.size() << " FE positions at " << torques.size() << " torques from "
-          << in.files.size() << " file(s), model " << in.model << ", geometry " << hash << "\n";
-      if (ctx.validate_only)
-        return;
+          << in.files.size() << " file(s)" << (cycle ? " and the condensed cycle" : "") << ", model " << in.model
+          << ", geometry " << hash << "\n";
 
       an::PairModelOptions opt;
       opt.model = in.model == "weber-cornell" ? an::StiffnessModel::weber_cornell : an::StiffnessModel::potential_energy;
@@ -112,7 +145,8 @@ namespace gearfem::commands
     c.name        = "calibrate";
     c.summary     = "fit the analytical mesh model to FE STE (gearfem solve results) and write stiffness tables";
     c.description = "Reads one or more results.h5 of `gearfem solve` for the same pair (geometry hash\n"
-                    "checked), fits multipliers on the beam, foundation and Hertz compliances, a body\n"
+                    "checked) and/or samples a condensed cycle of the pair (gearfem condense) at any\n"
+                    "torques of its range (Calibration/Condensed cycle, Cycle torques), fits multipliers on the beam, foundation and Hertz compliances, a body\n"
                     "compliance and the Hertz radius of the tip corners in corner contact, reports the\n"
                     "STE error before/after and\n"
                     "with each torque held out, and writes mesh_stiffness.h5 (k(theta, F)),\n"

@@ -114,4 +114,27 @@ namespace gearfem::condensed
     t.check();
     return t;
   }
+
+  std::vector<calibration::SteSample> ste_samples(const CondensedCycle &c, double rb1, std::vector<double> torques,
+                                                  const std::string &entry)
+  {
+    if (torques.empty())
+      for (int i = 0; i < 6; ++i)
+        torques.push_back(c.torque_lo * std::pow(c.torque_hi / c.torque_lo, i / 5.0));
+    for (const double T : torques)
+      if (!(T >= c.torque_lo * (1 - 1e-12) && T <= c.torque_hi * (1 + 1e-12)))
+        throw InputError(entry, to_string_g(T) + " N m",
+                         "[" + to_string_g(c.torque_lo) + ", " + to_string_g(c.torque_hi) + "] N m",
+                         "the torque range the condensed cycle was built for (Condense/Torque range)");
+    const Eigen::VectorXd none;
+    std::vector<calibration::SteSample> out;
+    for (const double T : torques)
+      for (std::size_t k = 0; k < c.positions.size(); ++k)
+        {
+          const double t = std::min(std::max(T, c.torque_lo), c.torque_hi);
+          const auto s   = contact::solve_condensed(c.at(k, t), none, t);
+          out.push_back({t, c.positions[k].second, s.solution.q * rb1});
+        }
+    return out;
+  }
 } // namespace gearfem::condensed

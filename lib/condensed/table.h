@@ -6,6 +6,7 @@
 // compressions run from 0 to the largest one every position reaches within the cycle's
 // torque range. The reverse flank of a two-sided table is the drive flank of the symmetric
 // teeth mapped as the calibrated tables map it (Gkimisis 2019, 4.11).
+#include "calibration/model.h"
 #include "condensed/cycle.h"
 #include "io/mesh_table.h"
 
@@ -24,4 +25,12 @@ namespace gearfem::condensed
   /// solve fails. Progress on `out` (may be null).
   io::MeshTable torque_table(const CondensedCycle &cycle, const geometry::GearPair &pair, const TableOptions &o,
                              std::ostream *out = nullptr);
+
+  /// FE STE samples of the unmodified design of `cycle` at each pinion torque of `torques`
+  /// [N m] at every stored position (torque control; STE = q r_b1): the training data of
+  /// `gearfem calibrate` at any torque of the cycle's range, milliseconds per position.
+  /// `torques` empty: 6 torques spread geometrically over [torque_lo, torque_hi]. InputError
+  /// (naming `entry`) for a torque outside that range; SolverError when a solve fails.
+  std::vector<calibration::SteSample> ste_samples(const CondensedCycle &cycle, double base_radius1,
+                                                  std::vector<double> torques, const std::string &entry);
 } // namespace gearfem::condensed
