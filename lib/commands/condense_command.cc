@@ -49,7 +49,7 @@ namespace gearfem::commands
       auto model = in.model();
       out << "model: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3) << model->setup_seconds()
           << " s" << std::endl;
-      condensed::CondensedCycle c = condensed::build_cycle(*model, in, T, lo, hi, &out);
+      condensed::CondensedCycle c = condensed::build_cycle(*model, in, T, lo, hi, &out, cp.scene_ratio);
       c.input_name = ctx.input_file.filename().string();
       const auto file = ctx.output_dir / condensed::file_name;
       condensed::write_cycle(c, file);

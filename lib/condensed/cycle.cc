@@ -85,10 +85,11 @@ namespace gearfem::condensed
   } // namespace
 
   CondensedCycle build_cycle(contact::GearContactModel &model, const solve::GearContactInput &in,
-                             double build_torque, double torque_lo, double torque_hi, std::ostream *out)
+                             double build_torque, double torque_lo, double torque_hi, std::ostream *out,
+                             double scene_ratio)
   {
     check_condensable(in);
-    CondensedCycle c = build_cycle(model, in.positions(), build_torque, torque_lo, torque_hi, out);
+    CondensedCycle c = build_cycle(model, in.positions(), build_torque, torque_lo, torque_hi, out, scene_ratio);
     c.key           = condensed_key(in);
     c.geometry_hash = geometry::geometry_fingerprint(in.unmodified_pair ? *in.unmodified_pair : *in.pair);
     c.method        = contact::to_string(in.contact.method);
@@ -96,8 +97,11 @@ namespace gearfem::condensed
   }
 
   CondensedCycle build_cycle(contact::GearContactModel &model, const std::vector<std::pair<std::string, double>> &positions,
-                             double build_torque, double torque_lo, double torque_hi, std::ostream *out)
+                             double build_torque, double torque_lo, double torque_hi, std::ostream *out,
+                             double scene_ratio)
   {
+    if (!(scene_ratio == 0 || (scene_ratio > 1 && std::isfinite(scene_ratio))))
+      throw InputError("Condense/Scene torque ratio", to_string_g(scene_ratio), "0 (no split) or > 1");
     require_greater("Condense/Build torque", build_torque, 0.0, "N m");
     if (!(torque_lo > 0 && torque_lo <= build_torque && build_torque <= torque_hi && std::isfinite(torque_hi)))
       throw InputError("Condense/Torque range", to_string_g(torque_lo) + ", " + to_string_g(torque_hi),
@@ -134,14 +138,26 @@ namespace gearfem::condensed
         for (const double b : scene_breaks(model, phi1, torque_lo, torque_hi))
           bounds.push_back(b);
         bounds.push_back(torque_hi);
+        if (scene_ratio > 1)
+          {
+            // Splits at build * ratio^(j + 1/2): no re-solve more than sqrt(ratio) from its build.
+            for (double b = build_torque * std::sqrt(scene_ratio); b < torque_hi * (1 - 1e-9); b *= scene_ratio)
+              bounds.push_back(b);
+            for (double b = build_torque / std::sqrt(scene_ratio); b > torque_lo * (1 + 1e-9); b /= scene_ratio)
+              bounds.push_back(b);
+            std::sort(bounds.begin(), bounds.end());
+            bounds.erase(std::unique(bounds.begin(), bounds.end(),
+                                     [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::abs(y); }),
+                         bounds.end());
+          }
         c.cycle.emplace_back();
         for (std::size_t s = 0; s + 1 < bounds.size(); ++s)
           {
-            // Solve the scene at the build torque, or inside its range nearest to it.
+            // Solve the scene at the build torque, or at the geometric middle of its range.
             const double lo = bounds[s], hi = bounds[s + 1];
             const double T  = build_torque >= lo && build_torque < hi ? build_torque :
-                              build_torque < lo                        ? std::min(lo * (1 + 1e-6), std::sqrt(lo * hi)) :
-                                                                         std::max(hi * (1 - 1e-6), std::sqrt(lo * hi));
+                              s + 2 == bounds.size() && build_torque == hi ? build_torque :
+                                                                              std::sqrt(lo * hi);
             const auto w       = warm.find(T);
             const auto state   = model.solve(phi1, T, w == warm.end() ? nullptr : &w->second);
             auto p             = solver.condense(model.scene(phi1, T / rb1), state.solution);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # gearfem calibrate on a condensed cycle (Calibration/Condensed cycle): its FE samples at the
 # torques of a full solve equal that solve's (same roll angles; STE within 1e-3 of the full
-# FE, the condensed route's accuracy), and the calibrated STE follows within 2 %; with the
+# FE, the condensed route's accuracy), and the calibrated STE follows within 1 %; with the
 # default Cycle torques it samples 6 torques over the cycle's range; a torque outside the
 # range and a cycle of another pair are refused with exit 2 naming the entry.
 #   calibrate_condensed.sh GEARFEM SRC_DIR
@@ -13,9 +13,12 @@ trap 'rm -rf "$work"' EXIT
 seed=$src/tests/fuzz/seeds
 "$gearfem" condense "$seed/solve_small.prm" --output-dir "$work/cycle" > "$work/condense.log" 2>&1 || { cat "$work/condense.log"; fail "condense"; }
 "$gearfem" solve "$seed/solve_small.prm" --output-dir "$work/full" > "$work/solve.log" 2>&1 || { cat "$work/solve.log"; fail "solve"; }
-sed "s|@RESULTS@|$work/full/results.h5|" "$seed/calibrate_small.prm" > "$work/full.prm"
-sed "s|set Results files = @RESULTS@|set Results files =\n  set Condensed cycle = $work/cycle/condensed.h5\n  set Cycle torques = 100, 200, 300|" \
-  "$seed/calibrate_small.prm" > "$work/cycle.prm"
+# Beam and Hertz only: on 5 positions the body compliance is not identifiable, and an
+# ill-posed fit would amplify the 1e-4 differences of the samples.
+sed -e "s|@RESULTS@|$work/full/results.h5|" -e "s|set Fit factors .*|set Fit factors = beam, hertz|" \
+  "$seed/calibrate_small.prm" > "$work/full.prm"
+sed -e "s|set Results files = @RESULTS@|set Results files =\n  set Condensed cycle = $work/cycle/condensed.h5\n  set Cycle torques = 100, 200, 300|" \
+  -e "s|set Fit factors .*|set Fit factors = beam, hertz|" "$seed/calibrate_small.prm" > "$work/cycle.prm"
 for c in full cycle; do
   "$gearfem" calibrate "$work/$c.prm" --output-dir "$work/cal_$c" > "$work/cal_$c.log" 2>&1 || { cat "$work/cal_$c.log"; fail "calibrate $c"; }
 done
@@ -34,7 +37,7 @@ for x, y in zip(a, b):
     for k in worst:
         worst[k] = max(worst[k], abs(float(x[k]) - float(y[k])) / mean)
 assert worst["STE FE [um]"] <= 1e-3, worst
-assert worst["STE after [um]"] <= 2e-2, worst
+assert worst["STE after [um]"] <= 1e-2, worst
 print("calibrate on the condensed cycle against the full FE samples (relative to the mean STE):", worst)
 PY
 # The default torques: 6 over the cycle's range (25 to 600 N m for the build at 300 N m).

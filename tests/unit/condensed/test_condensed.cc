@@ -173,11 +173,11 @@ TEST(Condensed, ContactBeyondTheStoredCandidatesFailsLoudly)
 {
   // With a 5 um search distance the cycle stores only the nodes within 5 um of the mating
   // flank at 100 N m; at 40 times the torque the contact spreads beyond them. (Fixed slaves:
-  // one scene, built at 100 N m.)
+  // one scene, built at 100 N m: Scene torque ratio 0.)
   const auto in = parse(case_prm(
     0, "100", "subsection Contact\n  set Search distance = 0.005\n  set Slave selection = fixed\nend\n"));
   auto model    = in.model();
-  const auto cycle = condensed::build_cycle(*model, in, 100, 100, 4000);
+  const auto cycle = condensed::build_cycle(*model, in, 100, 100, 4000, nullptr, 0.0);
   const condensed::Resolver r(cycle, in);
   EXPECT_NO_THROW(r.solve(2, 100, post::PostOptions()));
   try
