@@ -85,6 +85,7 @@ namespace gearfem::dynamics
         require_greater("Dynamics/Mesh force/Double-pair factor", double_pair_factor, 0.0);
         if (law == LawKind::external && external_source != ExternalSource::table_file)
           {
+            limits::check_youngs_modulus("Dynamics/Pair/Young modulus", youngs_modulus);
             // The analytical laws: the small-strain bound of the contact models at the pitch
             // point of the standard pair (plane strain, one material).
             const double r1 = 0.5 * module * z1, r2 = 0.5 * module * z2;

@@ -98,7 +98,7 @@ namespace gearfem::dynamics
                       "Normal backlash along the line of action; < 0: from the pair (Gkimisis 2019 "
                       "eq. 2.52). Units: um.");
     prm.declare_entry("Density", "7850", Double(0), "Units: kg/m^3.");
-    prm.declare_entry("Young modulus", "206", Double(1), "E (analytical table law). Units: GPa.");
+    prm.declare_entry("Young modulus", "206", Double(1), "E (analytical table law). Units: GPa. Allowed: 0.1 to 1500.");
     prm.declare_entry("Poisson ratio", "0.3", Double(0, 0.5), "nu (analytical table law) [-].");
     prm.declare_entry("Pinion inertia", "0", Double(0),
                       "I1; 0: solid cylinder of the pitch diameter. Units: kg m^2.");

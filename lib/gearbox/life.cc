@@ -1,5 +1,7 @@
 #include "gearbox/life.h"
 
+#include "geometry/limits.h"
+
 #include "base/errors.h"
 
 #include <algorithm>
@@ -227,7 +229,7 @@ namespace gearfem::gearbox
         const std::string p = in.stages[k].name + "/";
         fatigue::check_curve(in.materials[k].contact, p + "Contact");
         fatigue::check_curve(in.materials[k].bending, p + "Bending");
-        require_greater(p + "Young's modulus", in.materials[k].E / 1e9, 0.0, "GPa");
+        geometry::limits::check_youngs_modulus(p + "Young's modulus", in.materials[k].E);
         require_range(p + "Poisson ratio", in.materials[k].nu, 0.0, 0.49);
         require_range(p + "Roughness Ra", in.materials[k].Ra * 1e6, 0.01, 1.0, "um");
       }

@@ -1,4 +1,6 @@
 #include "gearbox/parameters.h"
+
+#include "geometry/limits.h"
 #include "base/units.h"
 
 #include "geometry/parameters.h"
@@ -73,7 +75,7 @@ namespace gearfem::gearbox
                         "Allowed |a_sun-planet - a_planet-ring|. Units: mm.");
       prm.declare_entry("Material name", s2 ? "42MnV7 nitrided" : "37Cr4 nitro-case-hardened", Anything(),
                         "For the report.");
-      prm.declare_entry("Young's modulus", "206", Double(0), "E of every member. Units: GPa.");
+      prm.declare_entry("Young's modulus", "206", Double(0), "E of every member. Units: GPa. Allowed: 0.1 to 1500.");
       prm.declare_entry("Poisson ratio", "0.3", Double(0, 0.5), "nu. Units: none.");
       prm.declare_entry("Roughness Ra", "0.5", Double(0), "Ra of the flanks. Units: um.");
       declare_sn(prm, "Contact", s2 ? "930" : "1285", "1e8", "-10", s2 ? "NT" : "Eh");
@@ -130,6 +132,7 @@ namespace gearfem::gearbox
       StageMaterial m;
       m.name = prm.get("Material name");
       m.E = params::get_double(prm, "Young's modulus") * 1e9;
+      geometry::limits::check_youngs_modulus(s.name + "/Young's modulus", m.E);
       m.nu = params::get_double(prm, "Poisson ratio");
       m.Ra = params::get_double(prm, "Roughness Ra") * 1e-6;
       m.contact = parse_sn(prm, "Contact");
@@ -186,9 +189,10 @@ namespace gearfem::gearbox
     prm.declare_entry("Oil type", "mineral", Selection("mineral|PAO|PAG|MIL-L-7808K|MIL-L-23699E"),
                       "For the pressure-viscosity constants (AGMA 925, Siasos 2010 eq. 4.4-48).");
     prm.declare_entry("Extreme pressure", "true", Bool(), "EP additives (theta_S of eq. 4.4-59).");
-    prm.declare_entry("Kinematic viscosity at 40 C", "220", Double(0), "nu40. Units: mm^2/s.");
-    prm.declare_entry("Dynamic viscosity at 40 C", "194.2414", Double(0), "eta40. Units: mPa s.");
-    prm.declare_entry("Dynamic viscosity at 100 C", "15.98296", Double(0), "eta100. Units: mPa s.");
+    prm.declare_entry("Kinematic viscosity at 40 C", "220", Double(0), "nu40. Units: mm^2/s. Allowed: 2 to 1e5.");
+    prm.declare_entry("Dynamic viscosity at 40 C", "194.2414", Double(0),
+                      "eta40. Units: mPa s. Allowed: 0.5 to 1e5, > eta100.");
+    prm.declare_entry("Dynamic viscosity at 100 C", "15.98296", Double(0), "eta100. Units: mPa s. Allowed: 0.5 to 1e5.");
     prm.declare_entry("Oil temperature", "70", Double(), "theta_oil (not given by Siasos 2010). Units: C.");
     prm.declare_entry("Sump factor", "1.0", Double(), "k_sump: 1.0 oil bath, 1.2 spray. Units: none.");
     prm.declare_entry("Points along the path", "25", Integer(), "Scuffing points from A to E (25-50).");

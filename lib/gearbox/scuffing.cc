@@ -71,8 +71,11 @@ namespace gearfem::gearbox::scuffing
     require_range("Lubricant/Oil temperature", c.theta_oil, -40.0, 200.0, "C");
     require_range("Lubricant/Sump factor", c.k_sump, 1.0, 1.2);
     require_range("Scuffing/Points along the path", c.points, 25, 50);
-    require_greater("Lubricant/Kinematic viscosity at 40 C", oil.nu40, 0.0, "mm^2/s");
-    require_greater("Lubricant/Dynamic viscosity at 100 C", oil.eta100 * 1e3, 0.0, "mPa s");
+    // The range of lubricating oils (ISO VG 2 to VG 3200 and beyond), where the Walther
+    // viscosity-temperature relation (log log (nu + 0.7)) holds: below 1 mm^2/s it has no real value.
+    require_range("Lubricant/Kinematic viscosity at 40 C", oil.nu40, 2.0, 1e5, "mm^2/s");
+    require_range("Lubricant/Dynamic viscosity at 100 C", oil.eta100 * 1e3, 0.5, 1e5, "mPa s");
+    require_range("Lubricant/Dynamic viscosity at 40 C", oil.eta40 * 1e3, 0.5, 1e5, "mPa s");
     if (!(oil.eta40 > oil.eta100))
       throw InputError("Lubricant/Dynamic viscosity at 40 C", to_string_g(oil.eta40 * 1e3) + " mPa s",
                        "> the value at 100 C (" + to_string_g(oil.eta100 * 1e3) + " mPa s)");

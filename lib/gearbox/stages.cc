@@ -86,6 +86,24 @@ namespace gearfem::gearbox
     const double u = double(z2) / z1;
     g.d_w1 = 2.0 * g.a / (u + sgn);
     const std::string stage = s.name + "/";
+    // A pointed tooth (the flanks meet below the tip circle: no tip land) has no AGMA 908
+    // geometry factor and is not a gear: refused against its member's profile shift. Tip land
+    // of an external tooth at r_a: s_a = 2 r_a (pi/(2z) + 2 x tan(alpha)/z + inv(alpha) - inv(alpha_a)).
+    const auto inv = [](double a) { return std::tan(a) - a; };
+    for (int i = 0; i < 2; ++i)
+      {
+        const bool ext = i == 0 || !internal;
+        const int z = i == 0 ? z1 : z2;
+        const double x = i == 0 ? x1 : x2, ra = i == 0 ? g.r_a1 : g.r_a2, rb = 0.5 * m * z * std::cos(g.alpha);
+        if (!ext || !(ra > rb))
+          continue;
+        const double sa = 2 * ra * (units::pi / (2 * z) + 2 * x * std::tan(g.alpha) / z + inv(g.alpha) -
+                                    inv(std::acos(rb / ra)));
+        if (!(sa > 0))
+          throw InputError(stage + member_entry(i == 0 ? pinion : gear) + " profile shift", to_string_g(x),
+                           "a value that leaves a tip land (the tooth of " + std::to_string(z) + " teeth is pointed)",
+                           "the flanks meet below the tip circle (tip land " + to_string_g(sa * 1e3) + " mm)");
+      }
     // A line of action that does not exist, or starts below the pinion's base circle
     // (involute interference, the real check on the generated geometry), is reported
     // against the gear's profile shift of this stage.

@@ -25,6 +25,11 @@ namespace gearfem::geometry::limits
     require_range(entry, x, min_profile_shift, max_profile_shift);
   }
 
+  void check_youngs_modulus(const std::string &entry, double E)
+  {
+    require_range(entry, E / units::GPa, 0.1, 1500.0, "GPa");
+  }
+
   void check_small_strain(const std::string &entry, double T, double base_radius1, double face_width, double E_star,
                           double curvature)
   {

@@ -19,6 +19,9 @@ namespace gearfem::geometry::limits
   void check_addendum(const std::string &entry, double h_a);         ///< [module]
   void check_face_width(const std::string &entry, double b);         ///< [m], > 0
   void check_profile_shift(const std::string &entry, double x);      ///< [module]
+  /// Young's modulus [Pa] of a gear material: 0.1 GPa (soft polymers) to 1500 GPa (above
+  /// diamond's 1050 GPa), the range every contact and rating model of gearfem is meant for.
+  void check_youngs_modulus(const std::string &entry, double E);
 
   /// The small-strain bound of every linear-elastic contact model of gearfem: the line-contact
   /// Hertz pressure at the pitch point with the whole torque on one pair (Johnson 1985, eq.

@@ -176,7 +176,7 @@ namespace gearfem::geometry
     for (const std::string g : {"Gear 1", "Gear 2"})
       {
         prm.enter_subsection(g);
-        prm.declare_entry("Young's modulus", "207", Double(), "E. Units: GPa. Allowed: > 0.");
+        prm.declare_entry("Young's modulus", "207", Double(), "E. Units: GPa. Allowed: 0.1 to 1500.");
         prm.declare_entry("Poisson ratio", "0.3", Double(), "nu. Units: none. Allowed: 0 to 0.5.");
         prm.declare_entry("Density", "7850", Double(), "rho. Units: kg/m^3. Allowed: > 0.");
         prm.leave_subsection();
@@ -233,7 +233,7 @@ namespace gearfem::geometry
         m.poisson_ratio  = params::get_double(prm, "Poisson ratio");
         m.density        = params::get_double(prm, "Density");
         prm.leave_subsection();
-        require_greater("Material/" + g + "/Young's modulus", m.youngs_modulus / units::GPa, 0.0, "GPa");
+        limits::check_youngs_modulus("Material/" + g + "/Young's modulus", m.youngs_modulus);
         if (!(m.poisson_ratio >= 0.0 && m.poisson_ratio < 0.5))
           throw InputError("Material/" + g + "/Poisson ratio", to_string_g(m.poisson_ratio), "[0, 0.5)");
         require_greater("Material/" + g + "/Density", m.density, 0.0, "kg/m^3");
