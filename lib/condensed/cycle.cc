@@ -140,15 +140,18 @@ namespace gearfem::condensed
         bounds.push_back(torque_hi);
         if (scene_ratio > 1)
           {
-            // Splits at build * ratio^(j + 1/2): no re-solve more than sqrt(ratio) from its build.
+            // Splits at build * ratio^(j + 1/2), strictly inside the range and apart from the
+            // slave breaks: no re-solve more than sqrt(ratio) from its build.
+            std::vector<double> cuts;
             for (double b = build_torque * std::sqrt(scene_ratio); b < torque_hi * (1 - 1e-9); b *= scene_ratio)
-              bounds.push_back(b);
+              cuts.push_back(b);
             for (double b = build_torque / std::sqrt(scene_ratio); b > torque_lo * (1 + 1e-9); b /= scene_ratio)
-              bounds.push_back(b);
+              cuts.push_back(b);
+            for (const double b : cuts)
+              if (std::none_of(bounds.begin(), bounds.end(),
+                               [b](double x) { return std::abs(x - b) <= 1e-9 * std::abs(b); }))
+                bounds.push_back(b);
             std::sort(bounds.begin(), bounds.end());
-            bounds.erase(std::unique(bounds.begin(), bounds.end(),
-                                     [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::abs(y); }),
-                         bounds.end());
           }
         c.cycle.emplace_back();
         for (std::size_t s = 0; s + 1 < bounds.size(); ++s)

@@ -191,6 +191,33 @@ TEST(Condensed, ContactBeyondTheStoredCandidatesFailsLoudly)
     }
 }
 
+TEST(Condensed, SceneSplitBoundsTheLoadRatioAndKeepsADegenerateRange)
+{
+  // Scene torque ratio 4 over 30-900 N m built at 300: cuts at 150 and 600 (and 37.5), so every
+  // scene is solved within a factor 2 of each torque it serves; a range of one torque (the
+  // single-torque optimiser: lo = hi = build) keeps one scene per position.
+  auto in    = parse(case_prm(0, "300", "subsection Solve\n  set Number of positions = 2\nend\n"));
+  auto model = in.model();
+  const auto split = condensed::build_cycle(*model, in, 300, 30, 900);
+  for (const auto &scenes : split.cycle)
+    {
+      ASSERT_GE(scenes.size(), 4u);
+      for (const auto &p : scenes)
+        for (const double T : {p.load_lo, p.load_hi})
+          {
+            const double ratio = T / p.load_build;
+            EXPECT_LE(std::max(ratio, 1 / ratio), 2.0 * (1 + 1e-9)) << p.load_lo << " " << p.load_hi;
+          }
+    }
+  const auto one = condensed::build_cycle(*model, in, 300, 300, 300);
+  for (const auto &scenes : one.cycle)
+    {
+      ASSERT_EQ(scenes.size(), 1u);
+      EXPECT_DOUBLE_EQ(scenes.front().load_build, 300);
+    }
+  EXPECT_NO_THROW(one.at(0, 300));
+}
+
 TEST(Condensed, TorqueTableMatchesRotationControlledFullSolves)
 {
   // Independent reference: the full FE under rotation control (GearContactModel::
