@@ -79,11 +79,7 @@ namespace gearfem::commands
               << cycle->torque_lo << " to " << cycle->torque_hi << " N m\n";
         }
       if (cycle)
-        for (const double T : in.cycle_torques)
-          if (!(T >= cycle->torque_lo && T <= cycle->torque_hi))
-            throw InputError("Calibration/Cycle torques", to_string_g(T) + " N m",
-                             "[" + to_string_g(cycle->torque_lo) + ", " + to_string_g(cycle->torque_hi) + "] N m",
-                             "the torque range the condensed cycle was built for (Condense/Torque range)");
+        condensed::check_cycle_torques(*cycle, in.cycle_torques, "Calibration/Cycle torques");
       if (ctx.validate_only)
         return;
       if (cycle)

@@ -115,17 +115,22 @@ namespace gearfem::condensed
     return t;
   }
 
+  void check_cycle_torques(const CondensedCycle &c, const std::vector<double> &torques, const std::string &entry)
+  {
+    for (const double T : torques)
+      if (!(T >= c.torque_lo * (1 - 1e-12) && T <= c.torque_hi * (1 + 1e-12)))
+        throw InputError(entry, to_string_g(T) + " N m",
+                         "[" + to_string_g(c.torque_lo) + ", " + to_string_g(c.torque_hi) + "] N m",
+                         "the torque range the condensed cycle was built for (Condense/Torque range)");
+  }
+
   std::vector<calibration::SteSample> ste_samples(const CondensedCycle &c, double rb1, std::vector<double> torques,
                                                   const std::string &entry)
   {
     if (torques.empty())
       for (int i = 0; i < 6; ++i)
         torques.push_back(c.torque_lo * std::pow(c.torque_hi / c.torque_lo, i / 5.0));
-    for (const double T : torques)
-      if (!(T >= c.torque_lo * (1 - 1e-12) && T <= c.torque_hi * (1 + 1e-12)))
-        throw InputError(entry, to_string_g(T) + " N m",
-                         "[" + to_string_g(c.torque_lo) + ", " + to_string_g(c.torque_hi) + "] N m",
-                         "the torque range the condensed cycle was built for (Condense/Torque range)");
+    check_cycle_torques(c, torques, entry);
     const Eigen::VectorXd none;
     std::vector<calibration::SteSample> out;
     for (const double T : torques)

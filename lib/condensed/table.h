@@ -31,6 +31,9 @@ namespace gearfem::condensed
   /// `gearfem calibrate` at any torque of the cycle's range, milliseconds per position.
   /// `torques` empty: 6 torques spread geometrically over [torque_lo, torque_hi]. InputError
   /// (naming `entry`) for a torque outside that range; SolverError when a solve fails.
+  /// InputError naming `entry` for a torque [N m] outside the range the cycle was built for.
+  void check_cycle_torques(const CondensedCycle &cycle, const std::vector<double> &torques, const std::string &entry);
+
   std::vector<calibration::SteSample> ste_samples(const CondensedCycle &cycle, double base_radius1,
                                                   std::vector<double> torques, const std::string &entry);
 } // namespace gearfem::condensed
