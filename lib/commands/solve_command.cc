@@ -12,6 +12,8 @@
 #include "post/parameters.h"
 #include "solve/run.h"
 #include "condensed/resolve.h"
+#include "commands/solve_hunting.h"
+#include "tolerance/parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -27,6 +29,7 @@ namespace gearfem::commands
     {
       solve::declare_gear_contact_input(prm);
       post::declare_post_parameters(prm);
+      tolerance::declare_deviation_parameters(prm);
     }
 
     /// `--condensed FILE`: the same run on a stored condensed cycle.
@@ -78,6 +81,12 @@ namespace gearfem::commands
           << contact::to_string(in.contact.method) << ", slave body " << in.contact.slave << ", "
           << (in.material[0].model == fem::PlaneModel::plane_stress ? "plane stress" : "plane strain")
           << "\n";
+      const tolerance::DeviationParameters deviations = tolerance::parse_deviation_parameters(prm);
+      if (deviations.active())
+        {
+          run_hunting_cycle(in, post_options, deviations, ctx);
+          return;
+        }
       if (!ctx.condensed.empty())
         {
           run_on_cycle(in, post_options, ctx);
@@ -178,12 +187,17 @@ namespace gearfem::commands
                     "With `Solve/Error estimate = true` it also estimates the discretisation error\n"
                     "of STE, root stress and p_max at three sample positions on a finer mesh\n"
                     "(summary and run.json, member error_estimate).\n"
+                    "With a `Deviations` section (pitch, profile and runout deviations, given or drawn\n"
+                    "within an ISO 1328-1 grade) it solves the hunting cycle on a condensed cycle (the\n"
+                    "one of --condensed, else one built in memory) and adds spectrum.csv (the order\n"
+                    "spectrum of the STE) and hunting.png (docs/deviations.md).\n"
                     "Sample runs:\n"
                     "  gearfem solve inputs/demo.prm\n"
                     "  gearfem solve inputs/demo.prm --resume\n"
                     "  gearfem solve inputs/demo.prm --condensed results/demo_condensed/condensed.h5 "
                     "--output-dir results/demo_on_cycle\n"
-                    "  gearfem solve validation/parker_ste/parker_ste.prm --output-dir results/parker\n";
+                    "  gearfem solve validation/parker_ste/parker_ste.prm --output-dir results/parker\n"
+                    "  gearfem solve inputs/deviations_demo.prm\n";
     c.declare = declare;
     c.run     = run;
     return c;

@@ -117,6 +117,12 @@ namespace gearfem::condensed
   Resolved Resolver::solve(std::size_t k, double torque, const Eigen::VectorXd &off,
                            const post::PostOptions &options) const
   {
+    return solve(k, torque, off, Eigen::VectorXd(), options);
+  }
+
+  Resolved Resolver::solve(std::size_t k, double torque, const Eigen::VectorXd &off, const Eigen::VectorXd &advance,
+                           const post::PostOptions &options) const
+  {
     require_greater("Solve/Torques", torque, 0.0, "N m");
     const auto t0 = Clock::now();
     Resolved r;
@@ -125,7 +131,7 @@ namespace gearfem::condensed
     try
       {
         pp = &cycle_.at(k, torque);
-        cs = contact::solve_condensed(*pp, off, torque);
+        cs = contact::solve_condensed(*pp, off, advance, torque);
       }
     catch (const SolverError &e)
       {

@@ -47,6 +47,10 @@ namespace gearfem::condensed
     /// manufacturing deviation on top of the relief).
     Resolved solve(std::size_t k, double torque, const Eigen::VectorXd &offsets,
                    const post::PostOptions &options) const;
+    /// The same with a drive advance per candidate [rad] (contact::solve_condensed; empty:
+    /// none): teeth turned rigidly by manufacturing deviations (tolerance/hunting.h).
+    Resolved solve(std::size_t k, double torque, const Eigen::VectorXd &offsets, const Eigen::VectorXd &advance,
+                   const post::PostOptions &options) const;
 
   private:
     /// Peak fillet sigma_1 of tooth `tooth` of body b under universe forces f: (value, radius).

@@ -23,26 +23,35 @@ namespace gearfem::contact
 
   namespace
   {
-    CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset, Control control,
+    CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset,
+                                 const Eigen::VectorXd &advance, Control control,
                                  double value, double tolerance, int max_active_set_iterations);
   }
 
   CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset, double load,
                                     double tolerance, int max_active_set_iterations)
   {
-    return solve_impl(c, offset, Control::load, load, tolerance, max_active_set_iterations);
+    return solve_impl(c, offset, Eigen::VectorXd(), Control::load, load, tolerance, max_active_set_iterations);
+  }
+
+  CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset,
+                                    const Eigen::VectorXd &advance, double load, double tolerance,
+                                    int max_active_set_iterations)
+  {
+    return solve_impl(c, offset, advance, Control::load, load, tolerance, max_active_set_iterations);
   }
 
   CondensedSolution solve_condensed_rotation(const CondensedPosition &c, const Eigen::VectorXd &offset, double q,
                                              int max_active_set_iterations)
   {
-    return solve_impl(c, offset, Control::displacement, q, 0.0, max_active_set_iterations);
+    return solve_impl(c, offset, Eigen::VectorXd(), Control::displacement, q, 0.0, max_active_set_iterations);
   }
 
   namespace
   {
-  CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset, Control control,
-                               double value, double tolerance, int max_active_set_iterations)
+  CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset,
+                               const Eigen::VectorXd &advance, Control control, double value, double tolerance,
+                               int max_active_set_iterations)
   {
     const double load = value;
     const auto t0 = std::chrono::steady_clock::now();
@@ -52,7 +61,11 @@ namespace gearfem::contact
     if (offset.size() != 0 && offset.size() != m)
       throw SolverError("condensed re-solve: " + std::to_string(offset.size()) + " gap offsets for " +
                         std::to_string(m) + " candidates");
+    if (advance.size() != 0 && advance.size() != m)
+      throw SolverError("condensed re-solve: " + std::to_string(advance.size()) + " drive advances for " +
+                        std::to_string(m) + " candidates");
     const Eigen::VectorXd o = offset.size() ? offset : Eigen::VectorXd::Zero(m);
+    const Eigen::VectorXd adv = advance.size() ? advance : Eigen::VectorXd::Zero(m);
     // Secant start along the build solve's load path (or the given rotation).
     double q = control == Control::displacement ? value :
                                                   (c.load_build > 0 ? c.q_build * load / c.load_build : c.q_build);
@@ -65,9 +78,11 @@ namespace gearfem::contact
     for (int it = 0; it < 30 && !settled; ++it)
       {
         // Linearise the curvature term about q: h(q') = h(q) + a(q) (q' - q).
-        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q - c.q_build);
+        // A candidate's rigid gap at q + s_k (s: drive advance, zero without deviations).
+        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q - c.q_build) + adv;
         arm  = c.a + c.curvature.cwiseProduct(dq);
-        ghat = c.ghat + o + c.a * q + 0.5 * c.curvature.cwiseProduct(dq.cwiseProduct(dq)) - arm * q;
+        ghat = c.ghat + o + c.a.cwiseProduct(Eigen::VectorXd::Constant(m, q) + adv) +
+               0.5 * c.curvature.cwiseProduct(dq.cwiseProduct(dq)) - arm * q;
         ncp  = solve_ncp(c.W, c.D, arm, ghat, control, value, q, lambda0, max_active_set_iterations);
         iterations += ncp.iterations;
         if (!ncp.ok)
@@ -86,8 +101,9 @@ namespace gearfem::contact
     for (int k = 0; k < m; ++k)
       lambda_b[k] = c.cand[k].point.force;
     const double dq = q - c.q_build;
+    const Eigen::VectorXd dqs = Eigen::VectorXd::Constant(m, dq) + adv;
     const Eigen::VectorXd approach =
-      -(c.a * dq + 0.5 * c.curvature * dq * dq + c.W * (ncp.lambda - lambda_b));
+      -(c.a.cwiseProduct(dqs) + 0.5 * c.curvature.cwiseProduct(dqs.cwiseProduct(dqs)) + c.W * (ncp.lambda - lambda_b));
     for (int k = 0; k < m; ++k)
       if (!c.cand[k].smooth && ncp.lambda[k] > 0 && std::abs(dq) > 1e-3 * std::abs(c.q_build))
         throw SolverError("condensed re-solve: stored candidate slave node " + std::to_string(c.cand[k].point.node) +

@@ -93,6 +93,13 @@ namespace gearfem::contact
   /// contact: rebuild the cycle at this load or with a larger search distance).
   CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset, double load,
                                     double tolerance = 1e-10, int max_active_set_iterations = 60);
+  /// The same with an advance s_k [rad] of the drive coordinate per candidate (empty: none):
+  /// candidate k's rigid gap is taken at q + s_k, arm and second-order term included. A tooth
+  /// turned rigidly about its axis (a pitch deviation, a flank offset of an involute) is such an
+  /// advance of the candidates of its tooth pair, exactly.
+  CondensedSolution solve_condensed(const CondensedPosition &c, const Eigen::VectorXd &offset,
+                                    const Eigen::VectorXd &advance, double load, double tolerance = 1e-10,
+                                    int max_active_set_iterations = 60);
   /// The same under rotation control: the drive coordinate q is given (>= 0); the load is
   /// the result. One complementarity solve (the curvature term is exact at a given q).
   CondensedSolution solve_condensed_rotation(const CondensedPosition &c, const Eigen::VectorXd &offset, double q,

@@ -141,24 +141,37 @@ namespace gearfem::geometry
       cumulative[b] = gear[b].cumulative_pitch();
   }
 
-  double PairDeviations::plus_material(int body, int tooth, double r) const
+  double PairDeviations::rigid_plus_material(int body, int tooth) const
+  {
+    const auto &F = cumulative[body - 1];
+    const int k   = wrap(tooth, teeth[body - 1]);
+    return gear[body - 1].flank_offset + (F.empty() ? 0.0 : F[std::size_t(k)] * range[body - 1].cos_alpha);
+  }
+
+  double PairDeviations::tooth_rotation(int body, int tooth) const
+  {
+    return rigid_plus_material(body, tooth) / range[body - 1].base_radius;
+  }
+
+  double PairDeviations::profile_plus_material(int body, int tooth, double r) const
   {
     const auto &g = gear[body - 1];
     const auto &R = range[body - 1];
-    const int z = teeth[body - 1];
-    const int k = wrap(tooth, z);
-    double v = g.flank_offset;
-    const auto &F = cumulative[body - 1];
-    if (!F.empty())
-      v += F[std::size_t(k)] * R.cos_alpha;
+    const int k   = wrap(tooth, teeth[body - 1]);
     const double xi = std::sqrt(std::max(0.0, r * r - R.base_radius * R.base_radius));
     const double L  = R.xi_end - R.xi_start;
     const double u  = L > 0 ? (xi - 0.5 * (R.xi_start + R.xi_end)) / L : 0.0;
+    double v = 0;
     if (!g.f_Ha.empty())
       v += per_tooth(g.f_Ha, k) * u;
     if (!g.form.empty())
       v += per_tooth(g.form, k).at(u, xi - R.xi_start);
     return v;
+  }
+
+  double PairDeviations::plus_material(int body, int tooth, double r) const
+  {
+    return rigid_plus_material(body, tooth) + profile_plus_material(body, tooth, r);
   }
 
   Eigen::Vector2d PairDeviations::runout(int body, double angle) const

@@ -111,6 +111,15 @@ namespace gearfem::geometry
     /// Plus material [m] on the loaded flank of tooth `tooth` (any integer, taken mod z) of
     /// gear `body` (1, 2) at radius r [m]: flank offset, F_p cos(alpha), slope and form.
     double plus_material(int body, int tooth, double r) const;
+    /// The part of it that moves the whole involute flank along its normal: flank offset and
+    /// F_p cos(alpha) [m]. An involute moved along its normal by d is the same involute turned
+    /// by d / r_b about the gear axis (counter-clockwise for plus material, either gear), so this
+    /// part is a rigid rotation of the tooth (tooth_rotation).
+    double rigid_plus_material(int body, int tooth) const;
+    /// rigid_plus_material / r_b [rad], counter-clockwise.
+    double tooth_rotation(int body, int tooth) const;
+    /// The rest: profile slope and form at radius r [m].
+    double profile_plus_material(int body, int tooth, double r) const;
     /// Displacement [m] of gear `body`'s centre by its runout when its body frame is turned by
     /// `angle` [rad] in the pair frame (pair-frame vector).
     Eigen::Vector2d runout(int body, double angle) const;
