@@ -4,8 +4,10 @@
 Usage: check.py --out <results dir> --fe-sweep <parker_ste plane-stress sweep.csv>
 References: the Blankenship & Kahraman experiments on this pair as VALIDATION.md states them
 (softening primary resonance with jumps and hysteresis, a superharmonic near half the
-resonant mesh frequency, contact loss even at high torque), and the closed form of the
-linear natural frequency f_n = sqrt(kbar/m_eq)/(2 pi) with kbar from the FE STE."""
+resonant mesh frequency, contact loss even at high torque), the closed form of the
+linear natural frequency f_n = sqrt(kbar/m_eq)/(2 pi) with kbar from the FE STE (the
+implementation), the same closed form with ISO 6336-1 c_gamma_alpha (independent of the FE),
+and Gkimisis 2019's f_eigen = 2370 Hz with its listing's one-pair stiffness (eigen_thesis.py)."""
 import argparse
 import math
 import os
@@ -13,6 +15,8 @@ import re
 import sys
 
 from vcheck import Checks, read_csv
+
+import eigen_thesis
 
 RHO, B, R, RB = 7850.0, 20e-3, 75e-3, 75e-3 * math.cos(math.radians(20))  # sweep_*.prm pair
 EXP = "VALIDATION.md (Blankenship & Kahraman experiments)"
@@ -83,6 +87,35 @@ def check_torque(c, out, T, kbar, kbar_secant):
         c.true(f"{T} N m: superharmonic band sampled", False, f"{len(band)} points", ">= 3", "sweep_*.prm")
 
 
+def check_eigen(c, out, fe):
+    """f_n against ISO 6336 (independent of the FE STE) and the thesis' 2370 Hz explained."""
+    _, cga = eigen_thesis.iso_stiffness()
+    f_iso = eigen_thesis.freq(cga * B * 1e9, m_eq())
+    for T in (100, 200, 340):
+        fn_fe = natural_frequency(os.path.join(out, f"fe_{T}Nm.log"))
+        c.rel(f"{T} N m: linear f_n, FE-calibrated table, against ISO 6336-1 c_gamma_alpha", fn_fe,
+              round(f_iso, 1), 0.15, "sqrt(c_gamma_alpha b/m_eq)/2pi, ISO 6336-1 method B (c' 14.05, "
+              "c_gamma_alpha 22.01 N/(mm um), eps 1.755); tolerance: ISO's empirical C_M = 0.8 against a "
+              "2-D plane-stress FE", " Hz")
+    c1, _ = eigen_thesis.iso_stiffness()
+    c.info("Gkimisis 2019 f_eigen formula with ISO's one-pair c' (b cancels)",
+           f"{eigen_thesis.freq(c1 * 10e6, eigen_thesis.m_eq(10, eigen_thesis.RHO_THESIS)):.0f} Hz",
+           "2370 Hz (thesis)", "ISO c' is 55 % stiffer than the 2-D FE pair stiffness the thesis matched")
+    cand = eigen_thesis.candidates(fe)
+    for T, f in cand.items():
+        c.rel(f"{T} N m: Gkimisis 2019 f_eigen, its listing's formula (one tooth pair's stiffness)",
+              f["one pair, same b (listing)"], eigen_thesis.F_THESIS, 0.05,
+              "Gkimisis 2019 sec. 5.2: 2370 Hz; listing: Kmean = mean(Ktotal) per tooth pair, I from the "
+              "same b; k = FE mean pair stiffness sum(F_n/STE)/sum(pairs) of parker_ste (the thesis shows its "
+              "STE matching Parker's FE, Fig. 22)", " Hz")
+        c.info(f"{T} N m: f_n with the mesh stiffness (sum over pairs, {f['mean pairs in contact']:.3g} "
+               "pairs on average)", f"{f['mesh, same b']:.0f} Hz", "2370 Hz (thesis)",
+               "the gap: the mesh has ~2 pairs in contact, the thesis' f_eigen uses one")
+        c.info(f"{T} N m: alternative, mesh stiffness of b 10 with inertia of b 20",
+               f"{f['mesh of b 10, inertia of b 20']:.0f} Hz", "2370 Hz (thesis)",
+               "also within 2.2 %, but the listing uses one b for K and I (b = min(b1, b2))")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
@@ -98,6 +131,7 @@ def main():
         kbar = sum(r["F_n"] for r in rows) / sum(r["STE"] * 1e-6 for r in rows)  # N/m (STE in um)
         kbar_secant = sum(r["F_n"] / (r["STE"] * 1e-6) for r in rows) / len(rows)
         check_torque(c, args.out, T, kbar, kbar_secant)
+    check_eigen(c, args.out, fe)
     return c.finish()
 
 

@@ -6,7 +6,8 @@
 # solves on the condensed cycle of the parker_ste plane-stress model, gearfem condense);
 # analyse.py reports the resonance, jump
 # frequencies and contact loss and plots parker_sweeps{,_ste,_analytical}.png; check.py
-# compares with the references of README.md and ends with PASS or FAIL.
+# compares with the references of README.md (including f_n against ISO 6336 c_gamma_alpha and
+# Gkimisis 2019's f_eigen, eigen_thesis.py) and ends with PASS or FAIL.
 # Uses validation/parker_ste/results/plane_stress (runs parker_ste/sweeps.sh when missing).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"

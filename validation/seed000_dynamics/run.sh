@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
-# Gkimisis 2019 Table 1 dynamic cases: 2-DOF torque-driven model with the
-# analytical (Weber/Cornell) torque table, then with the thesis' semi-analytical law
-# (Law = Ricker, the same files with the law swapped); the contact-state plot (plot.py);
-# the Table 1 pair geometry (gearfem profile); check.py against the thesis (PASS or FAIL).
+# Gkimisis 2019 dynamic cases. (1) The four Table 1 cases as the thesis describes them, with
+# the analytical (Weber/Cornell) torque table and with the thesis' semi-analytical law
+# (Law = Ricker, the same files with the law swapped), and the contact-state plot (plot.py);
+# (2) the same cases with the set-up of the thesis' listing (thesis_runs.py) and the settled
+# speed of its initial conditions checked by an independent integration (momentum.py);
+# (3) the period-doubling search around case 2 (grid.py, period_grid.png); (4) the Vasileiou
+# pair of Figs 27-28 with phase portraits (vasileiou.py, vasileiou_portraits.png); (5) the
+# speed-versus-error table of the laws with an FE-exact table of the pair (gearfem condense
+# fe_table_32_60.prm, timing.py); (6) the Table 1 pair geometry (gearfem profile);
+# check.py against the thesis (PASS or FAIL). About 15-20 min on two cores.
 # Usage: validation/seed000_dynamics/run.sh   (GEARFEM=path/to/gearfem to override)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 gearfem="${GEARFEM:-$gearfem}"
 need "$gearfem"
-cases=(case1_5Nm_600rpm case2_20Nm_1200rpm case3_40Nm_1200rpm case4_20Nm_1200rpm_a+1mm)
+export PYTHONPATH="$here:$root/validation/lib${PYTHONPATH:+:$PYTHONPATH}"
+cases=(case1_5Nm_600rpm case2_20Nm_1200rpm case3_40Nm_1200rpm case4_40Nm_1200rpm_a+1mm)
 mkdir -p "$out/ricker"
 i=0
 for c in "${cases[@]}"; do
@@ -27,4 +34,19 @@ for c in "${cases[@]}"; do
 done
 /usr/bin/python3 "$here/plot.py" "$here/contact_states.png" $(for c in "${cases[@]}"; do echo "$out/$c"; done)
 "$gearfem" profile "$root/inputs/seed000_32_60.prm" --output-dir "$out/profile" > "$out/profile.log" 2>&1
+echo "== the thesis' listing set-up (8 runs)"
+/usr/bin/python3 "$here/thesis_runs.py" "$gearfem" "$out" $(for c in "${cases[@]}"; do echo "$here/$c.prm"; done)
+echo "== settled speed from the thesis' initial conditions (independent 2-DOF RK4)"
+for k in constant zones; do
+  /usr/bin/python3 "$here/momentum.py" 1200 20 $k | tee "$out/momentum_$k.log"
+done
+echo "== period-doubling grid (360 runs)"
+/usr/bin/python3 "$here/grid.py" "$gearfem" "$out" "$here/case2_20Nm_1200rpm.prm" "$here/period_grid.png"
+echo "== Vasileiou pair (Figs 27-28)"
+/usr/bin/python3 "$here/vasileiou.py" "$gearfem" "$out" "$here/vasileiou_portraits.png" \
+  "$here/vasileiou_5.31Nm_2727rpm.prm" "$here/vasileiou_8.11Nm_3272rpm.prm"
+echo "== FE-exact table of the pair (condensed cycle) and the speed-versus-error table"
+"$gearfem" condense "$here/fe_table_32_60.prm" --output-dir "$out/fe_table" > "$out/condense.log" 2>&1
+grep -m1 "^wrote.*mesh_torque" "$out/condense.log"
+/usr/bin/python3 "$here/timing.py" "$gearfem" "$out" "$here/case2_20Nm_1200rpm.prm" "$out/fe_table/mesh_torque.h5"
 check --out "$out"
