@@ -14,6 +14,7 @@ namespace gearfem::commands
   Command batch_command();
   Command gearbox_command();
   Command optimise_command();
+  Command tolerance_command();
 
   const std::vector<Command> &registry()
   {
@@ -28,6 +29,7 @@ namespace gearfem::commands
       calibrate_command(),
       batch_command(),
       optimise_command(),
+      tolerance_command(),
       bench_command(),
     };
     return commands;

@@ -69,7 +69,13 @@ namespace gearfem::contact
     // Secant start along the build solve's load path (or the given rotation).
     double q = control == Control::displacement ? value :
                                                   (c.load_build > 0 ? c.q_build * load / c.load_build : c.q_build);
+    // Start the active set from the build solve's contact forces, scaled to the load: a
+    // re-solve near the build (another torque, a modification of a few um) then settles in
+    // one or two active-set iterations instead of growing the set from one node.
     Eigen::VectorXd lambda0 = Eigen::VectorXd::Zero(m);
+    if (control == Control::load && c.load_build > 0)
+      for (int k = 0; k < m; ++k)
+        lambda0[k] = std::max(0.0, c.cand[k].point.force) * load / c.load_build;
     NcpResult ncp;
     std::vector<char> prev_active;
     int iterations = 0;

@@ -137,8 +137,21 @@ namespace gearfem::geometry
 
   void PairDeviations::finalise()
   {
+    // The datum of the cumulative pitch deviations is the mean position of the teeth: a common
+    // shift of every tooth is a rigid turn of the gear, which only moves the mean STE, and the
+    // choice of tooth 0 as datum must not.
     for (int b = 0; b < 2; ++b)
-      cumulative[b] = gear[b].cumulative_pitch();
+      {
+        cumulative[b] = gear[b].cumulative_pitch();
+        if (cumulative[b].empty())
+          continue;
+        double mean = 0;
+        for (const double F : cumulative[b])
+          mean += F;
+        mean /= double(cumulative[b].size());
+        for (double &F : cumulative[b])
+          F -= mean;
+      }
   }
 
   double PairDeviations::rigid_plus_material(int body, int tooth) const

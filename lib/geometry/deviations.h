@@ -103,7 +103,8 @@ namespace gearfem::geometry
     GearDeviations gear[2];
     FlankRange range[2];
     int teeth[2] = {0, 0};
-    /// F_p,k of each gear (set by finalise(); empty without pitch deviations).
+    /// F_p,k of each gear about their mean (set by finalise(); empty without pitch deviations):
+    /// the teeth's mean position is the datum, so a pitch deviation does not shift the mean STE.
     std::vector<double> cumulative[2];
     /// Call after filling gear[]: caches the cumulative pitch deviations.
     void finalise();

@@ -185,11 +185,12 @@ namespace gearfem::tolerance
               r.result.phi1 = r.state.phi1;
               for (auto &tp : r.result.pairs)
                 tp.pinion_tooth = wrap(tp.pinion_tooth - j, z1), tp.gear_tooth = wrap(tp.gear_tooth + j, z2);
-              solve::append_position(t, r.state, r.result, "", int(long(M) * j + long(k)), z_ratio, face_width);
+              if (opt.tables)
+                solve::append_position(t, r.state, r.result, "", int(long(M) * j + long(k)), z_ratio, face_width);
               h.ste[ti].push_back(r.result.ste);
               h.max_root_stress[0][ti] = std::max(h.max_root_stress[0][ti], r.result.max_root_stress_pinion);
               h.max_root_stress[1][ti] = std::max(h.max_root_stress[1][ti], r.result.max_root_stress_gear);
-              h.max_pressure[ti]       = std::max({h.max_pressure[ti], r.result.p_max, r.result.p_max_edge});
+              h.max_pressure[ti]       = std::max(h.max_pressure[ti], r.result.p_max);
               t_contact += r.state.t_contact, t_post += r.result.t_post;
               ++run.solved;
               if (opt.out && ((i + 1) % std::max<std::size_t>(1, total / 20) == 0 || i + 1 == total))
@@ -220,9 +221,10 @@ namespace gearfem::tolerance
         for (const auto &l : h.spectrum.back())
           spec.add_row({torques[ti], l.order_pinion, l.order_gear, l.order_pinion / z1, l.amplitude * 1e6});
       }
-    run.unresolved = solve::count_unresolved(t, opt.post.unresolved_share);
+    if (opt.tables)
+      run.unresolved = solve::count_unresolved(t, opt.post.unresolved_share);
     const auto t_out = Clock::now();
-    if (!opt.output_dir.empty())
+    if (!opt.output_dir.empty() && opt.tables)
       {
         io::write_solve_results(t, opt.output_dir);
         spec.write_csv(opt.output_dir / "spectrum.csv");

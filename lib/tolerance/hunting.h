@@ -71,6 +71,9 @@ namespace gearfem::tolerance
     std::ostream *out = nullptr; ///< progress (i/N and ETA); null: quiet
     std::filesystem::path output_dir; ///< empty: nothing written
     std::string input_name;
+    /// false: keep only the STE, the spectra and the peaks (no sweep, pairs and pressure
+    /// tables; a Monte Carlo sample needs no more).
+    bool tables = true;
   };
 
   struct HuntingRun
@@ -81,7 +84,8 @@ namespace gearfem::tolerance
     std::vector<std::vector<double>> ste;
     std::vector<std::vector<OrderLine>> spectrum;
     std::vector<SpectrumSummary> summary;
-    /// Per torque: peak root stress of each gear and peak pressure over the cycle [Pa].
+    /// Per torque: peak root stress of each gear and peak pressure of the flank-to-flank
+    /// (Hertzian) pairs over the cycle [Pa] (an edge contact's pressure is mesh-dependent).
     std::vector<double> max_root_stress[2], max_pressure;
   };
 

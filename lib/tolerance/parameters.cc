@@ -120,6 +120,32 @@ namespace gearfem::tolerance
     }
   } // namespace
 
+  void declare_tolerance_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tolerance");
+    prm.declare_entry("Samples", "100", dealii::Patterns::Integer(),
+                      "Monte Carlo samples: draws of both gears within Deviations/Accuracy grade (sample i uses the "
+                      "i-th draw of Deviations/Seed), each solved over the cycle of Deviations/Pitches. Allowed: "
+                      "1 .. 1000000.");
+    prm.declare_entry("Condensed cycle", "", dealii::Patterns::Anything(),
+                      "A condensed cycle of this design (gearfem condense) to solve the samples on; empty: the "
+                      "study builds it once and keeps it as condensed.h5 in the output folder (a resumed study "
+                      "reads it back).");
+    prm.leave_subsection();
+  }
+
+  ToleranceParameters parse_tolerance_parameters(dealii::ParameterHandler &prm)
+  {
+    ToleranceParameters p;
+    prm.enter_subsection("Tolerance");
+    p.samples    = params::get_integer(prm, "Samples");
+    p.cycle_file = dealii::Utilities::trim(prm.get("Condensed cycle"));
+    prm.leave_subsection();
+    if (p.samples < 1 || p.samples > 1000000)
+      throw InputError("Tolerance/Samples", std::to_string(p.samples), "1 .. 1000000");
+    return p;
+  }
+
   void declare_deviation_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Deviations");

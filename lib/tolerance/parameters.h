@@ -5,6 +5,7 @@
 #include "geometry/deviations.h"
 
 #include <cstdint>
+#include <string>
 
 namespace dealii
 {
@@ -31,6 +32,15 @@ namespace gearfem::tolerance
     /// Any deviation given or drawn: `gearfem solve` then runs the hunting cycle.
     bool active() const { return grade > 0 || !gear[0].empty() || !gear[1].empty(); }
   };
+
+  /// The `Tolerance` section of `gearfem tolerance`.
+  struct ToleranceParameters
+  {
+    long samples = 100;     ///< Monte Carlo samples
+    std::string cycle_file; ///< a stored condensed cycle; empty: build it (condensed.h5 in the output)
+  };
+  void declare_tolerance_parameters(dealii::ParameterHandler &prm);
+  ToleranceParameters parse_tolerance_parameters(dealii::ParameterHandler &prm);
 
   void declare_deviation_parameters(dealii::ParameterHandler &prm);
   /// InputError naming the entry for values out of range (sizes against the tooth counts are

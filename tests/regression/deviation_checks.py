@@ -12,7 +12,8 @@ checked against kinematics that do not come from the contact solver:
   is in mesh, at the pitches where the hunting cycle brings it there (tooth s - j in the slot of
   stored tooth s at pitch j), and its STE moves by exactly -delta cos(alpha) with its deviation;
 - the same tooth set back by more than the deflection: where it is the only loaded pair its STE
-  is the single-pair STE plus delta cos(alpha), and wherever it shares the load it carries less.
+  is the single-pair STE plus delta (1 - 1/z1) cos(alpha), and wherever it shares the load it
+  carries less.
 
 Usage: deviation_checks.py GEARFEM WORKDIR (quick tier; about 10 s).
 """
@@ -174,23 +175,27 @@ def main(argv):
     both = np.intersect1d(where, np.unique(p35["position"][(p35["pinion tooth"] == tooth) &
                                                             (p35["load share"] > 0.999)].astype(int)))
     d = s35["STE"][both] - s25["STE"][both]
-    shift = -10 * math.cos(ALPHA)
+    # The datum of the cumulative pitch deviations is the teeth's mean position: the tooth moves
+    # by delta (1 - 1/z1) against it.
+    shift = -10 * (1 - 1 / Z1) * math.cos(ALPHA)
     err = np.max(np.abs(d - shift)) if len(d) else float("inf")
     check(len(both) >= 3 and err < 1e-6,
-          f"its STE moves by -delta cos(alpha) = {shift:.4f} um from 25 to 35 um: max error {err:.1e} um "
-          f"over {len(both)} positions")
+          f"its STE moves by -delta (1 - 1/z1) cos(alpha) = {shift:.4f} um from 25 to 35 um: max error "
+          f"{err:.1e} um over {len(both)} positions")
     # 4. Set back by 25 um: where it is the only loaded pair its STE is the single-pair STE plus
     # delta cos(alpha); wherever it shares the load, it carries less than without the deviation.
     sb, pb = run(gearfem, work, "toothback", deviations("hunting", {"Single pitch deviations":
                                                                     pitch_list(tooth, -25)}), cycle)
     gpos = pb["position"].astype(int)
     alone = [g for g in np.unique(gpos) if np.all(pb["pinion tooth"][gpos == g] == tooth)]
+    # Against the baseline, every other tooth moves by +25/z1 (the datum) and this one by
+    # -25 (1 - 1/z1): the single-pair STE rises by 25 (1 - 1/z1) cos(alpha).
     d = sb["STE"][alone] - tiled[alone]
-    shift = 25 * math.cos(ALPHA)
+    shift = 25 * (1 - 1 / Z1) * math.cos(ALPHA)
     err = np.max(np.abs(d - shift)) if len(d) else float("inf")
     check(len(alone) >= 1 and err < 1e-6,
           f"pinion tooth {tooth} set back by 25 um, where it is the only loaded pair: STE = single-pair STE + "
-          f"delta cos(alpha) = +{shift:.4f} um, max error {err:.1e} um over {len(alone)} positions")
+          f"delta (1 - 1/z1) cos(alpha) = +{shift:.4f} um, max error {err:.1e} um over {len(alone)} positions")
     worse = 0
     shared = 0
     for g in np.unique(gpos):

@@ -146,10 +146,12 @@ TEST(Deviations, FlankOffsets)
   g.f_pt[3] = 5 * um, g.f_pt[4] = -5 * um; // tooth 3 alone advanced by 5 um
   p.finalise();
   const double r_mid = std::hypot(10 * mm, 4 * mm); // xi = 4 mm, u = 0
-  EXPECT_NEAR(p.plus_material(1, 3, r_mid), 5 * um * p.range[0].cos_alpha, 1e-15);
-  EXPECT_NEAR(p.plus_material(1, 13, r_mid), 5 * um * p.range[0].cos_alpha, 1e-15); // modulo z
-  EXPECT_NEAR(p.plus_material(1, -7, r_mid), 5 * um * p.range[0].cos_alpha, 1e-15);
-  EXPECT_NEAR(p.plus_material(1, 4, r_mid), 0.0, 1e-15);
+  // The datum is the teeth's mean position: 5 um on one tooth of ten puts the others at -0.5 um.
+  const double ca = p.range[0].cos_alpha;
+  EXPECT_NEAR(p.plus_material(1, 3, r_mid), 4.5 * um * ca, 1e-15);
+  EXPECT_NEAR(p.plus_material(1, 13, r_mid), 4.5 * um * ca, 1e-15); // modulo z
+  EXPECT_NEAR(p.plus_material(1, -7, r_mid), 4.5 * um * ca, 1e-15);
+  EXPECT_NEAR(p.plus_material(1, 4, r_mid), -0.5 * um * ca, 1e-15);
   EXPECT_NEAR(p.plus_material(2, 3, r_mid), 0.0, 1e-15);
   // Slope: linear in the roll length, +-f/2 at the ends of the range, 0 mid-range.
   g.f_pt.clear();
