@@ -36,6 +36,8 @@ ALLOWED = {
                  'solve', 'condensed'},
     'gearbox': {'base', 'params', 'io', 'geometry', 'analytical', 'rating', 'solve'},
     'batch': {'base', 'params', 'io', 'geometry', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve', 'condensed'},
+    'tolerance': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'dynamics', 'mesh', 'fem',
+                  'contact', 'loading', 'post', 'solve', 'condensed'},
     'commands': None,  # wires everything together
 }
 # Modules (or their light parts) that must not see deal.II, gmsh or PETSc.
