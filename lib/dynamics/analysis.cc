@@ -93,6 +93,9 @@ namespace gearfem::dynamics
     const double Fs = model.static_force();
     const double kbar = model.law().mean_stiffness();
     const double scale_d0 = std::abs(Fs / kbar) > 0 ? std::abs(Fs / kbar) : 1.0;
+    const bool conservative = model.conservative();
+    const State x_start = x;
+    const double E_start = conservative ? model.kinetic_energy(t, x) + model.elastic_energy(t, x) : 0.0;
 
     // Transient: one period at a time, Poincare samples, steady-state check.
     int k = 0, p = 0;
@@ -135,6 +138,7 @@ namespace gearfem::dynamics
     const double dt = T / ns;
     const double t_rec = t;
     double sum = 0, sum2 = 0, dmin = 1e300, dmax = -1e300, fmax = -1e300;
+    double amin[2] = {1e300, 1e300}, amax[2] = {-1e300, -1e300};
     long n_loss = 0, n_back = 0, n = 0;
     bool any_back = false, any_loss = false;
     long events = 0;
@@ -152,6 +156,9 @@ namespace gearfem::dynamics
             const int s = model.contact_state(t, x);
             sum += d, sum2 += d * d, ++n;
             dmin = std::min(dmin, d), dmax = std::max(dmax, d), fmax = std::max(fmax, F);
+            const std::vector<double> a = model.angle_deviations(t, x);
+            for (std::size_t i = 0; i < a.size() && i < 2; ++i)
+              amin[i] = std::min(amin[i], a[i]), amax[i] = std::max(amax[i], a[i]);
             if (s != 1)
               ++n_loss, any_loss = true;
             if (s == -1)
@@ -163,6 +170,8 @@ namespace gearfem::dynamics
                 r.rate.push_back(model.compression_rate(t, x));
                 r.force.push_back(F);
                 r.state.push_back(s);
+                if (a.size() == 2)
+                  r.angle1.push_back(a[0]), r.angle2.push_back(a[1]);
               }
           }
         r.poincare_delta.push_back(model.compression(t, x));
@@ -179,6 +188,14 @@ namespace gearfem::dynamics
     r.out_of_range = model.law().out_of_range_count() - oor0;
     r.steps = integ.stats().accepted;
     r.rhs_evaluations = integ.stats().rhs_evaluations;
+    if (amax[0] >= amin[0])
+      r.angle_amplitude1 = 0.5 * (amax[0] - amin[0]), r.angle_amplitude2 = 0.5 * (amax[1] - amin[1]);
+    if (conservative)
+      {
+        const double E = model.kinetic_energy(t, x) + model.elastic_energy(t, x);
+        const double K0 = model.kinetic_energy(t_start, x_start);
+        r.energy_balance = (E - E_start - model.torque_work(x_start, x)) / (K0 > 0 ? K0 : 1.0);
+      }
     if (!std::isfinite(r.rms) || !std::isfinite(r.dynamic_factor))
       throw SolverError("non-finite response at pinion speed " + to_string_g(r.pinion_speed) +
                         " rad/s");

@@ -8,6 +8,7 @@
 
 #include <complex>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,10 +41,20 @@ namespace gearfem::dynamics
     int transient_periods = 0;  ///< periods integrated before recording
     long contact_events = 0;    ///< located contact-state changes during the record
     long out_of_range = 0;      ///< table evaluations outside the validity range
+    /// Half the peak-to-peak of the gears' vibratory angles over the record (angle minus the
+    /// nominal rotation; MeshModel::angle_deviations) [rad]; NaN for models without angles.
+    double angle_amplitude1 = std::numeric_limits<double>::quiet_NaN();
+    double angle_amplitude2 = std::numeric_limits<double>::quiet_NaN();
+    /// Energy balance of a conservative model over the whole run (MeshModel::conservative()):
+    /// (change of kinetic + elastic energy - work of the torques) / initial kinetic energy [-];
+    /// NaN when the model is not conservative.
+    double energy_balance = std::numeric_limits<double>::quiet_NaN();
     long steps = 0, rhs_evaluations = 0; ///< integrator work for this point
     // History of the record (keep_history): time [s], delta [m], rate [m/s], force [N], s.
     std::vector<double> t, delta, rate, force;
     std::vector<int> state;
+    /// Vibratory angles of pinion and gear [rad] (models with angles; MeshModel::angle_deviations).
+    std::vector<double> angle1, angle2;
     std::vector<double> poincare_delta, poincare_rate; ///< one per mesh period (whole run)
   };
 

@@ -1,9 +1,12 @@
 #include "dynamics/case.h"
+#include "dynamics/law_factory.h"
+#include "dynamics/tooth_mass.h"
 #include "geometry/limits.h"
 #include "base/units.h"
 
 #include "base/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -13,27 +16,6 @@ namespace gearfem::dynamics
 
   namespace
   {
-    /// Area of an unshifted involute tooth between the root circle r - 1.25 m and the tip
-    /// circle [m^2]: thickness s(r) = 2 r (psi/2 + inv alpha - inv alpha_r) on the involute,
-    /// radial flanks below the base circle (midpoint rule, 400 strips).
-    double tooth_area(int z, double m, double alpha, double addendum, double cf)
-    {
-      const double r = m * z / 2, rb = r * std::cos(alpha);
-      const double rf = r - 1.25 * m, ra = r + addendum * m;
-      const double psi = 2 * units::pi * cf / z; // angular thickness at the reference circle
-      auto inv = [](double a) { return std::tan(a) - a; };
-      auto s = [&](double rr) {
-        const double q = std::max(rr, rb);
-        const double ar = std::acos(rb / q);
-        return std::max(0.0, 2 * q * (psi / 2 + inv(alpha) - inv(ar)));
-      };
-      const int n = 400;
-      double A = 0;
-      for (int i = 0; i < n; ++i)
-        A += s(rf + (ra - rf) * (i + 0.5) / n) * (ra - rf) / n;
-      return A;
-    }
-
     std::string fmt(const std::string &name, double v, const std::string &unit)
     {
       std::ostringstream s;
@@ -174,18 +156,36 @@ namespace gearfem::dynamics
     note(fmt("base radii r_b1", pair.r_b1 * 1e3, "mm") + ", " + fmt("r_b2", pair.r_b2 * 1e3, "mm"));
     note(fmt("start of contact theta_A", pair.theta_A / units::deg, "deg"));
     note(fmt("inertias J1", J1, "kg m^2") + ", " + fmt("J2", J2, "kg m^2"));
+    std::shared_ptr<const PeriodicInertia> Jt1_theta, Jt2_theta;
     if (c.tooth_mass)
       {
-        const double m1 = c.density * c.face_width *
-                          tooth_area(c.z1, c.module, c.alpha, c.addendum, c.thickness1);
-        const double m2 = c.density * c.face_width *
-                          tooth_area(c.z2, c.module, c.alpha, c.addendum, c.thickness2);
-        const double Jt1 = tooth_inertia(m1, r1, eps, c.tooth_mass_energy_weighting);
-        const double Jt2 = tooth_inertia(m2, r2, eps, c.tooth_mass_energy_weighting);
-        note(fmt("tooth inertia J_tooth1", Jt1, "kg m^2") + ", " +
-             fmt("J_tooth2", Jt2, "kg m^2") + " (" + to_string_g(100 * Jt1 / J1) + " % of J1, " +
-             to_string_g(100 * Jt2 / J2) + " % of J2)");
-        J1 += Jt1, J2 += Jt2;
+        // The NTUA tooth-mass thesis (eqs. 3.1-3.6) on the generated pair: m_eq along the
+        // path with the Weber/Cornell foundation share, J_t(theta) = sum m_eq r^2.
+        const ToothInertiaCurves tc =
+          tooth_inertia_curves(generated_pair(c), analytical::Material{c.youngs_modulus, c.poisson_ratio},
+                               c.density,
+                               c.tooth_mass_energy_weighting ? ToothMassWeighting::kinetic_energy :
+                                                               ToothMassWeighting::thesis_linear);
+        note(fmt("tooth inertia J_tooth1", tc.mean1, "kg m^2") + ", " + fmt("J_tooth2", tc.mean2, "kg m^2") +
+             " (mean over a mesh period; " + to_string_g(100 * tc.mean1 / J1) + " % of J1, " +
+             to_string_g(100 * tc.mean2 / J2) + " % of J2; " +
+             (c.tooth_mass_energy_weighting ? "(delta/delta0)^2" : "(delta/delta0), the thesis") +
+             " weighting)");
+        if (c.tooth_inertia_position_dependent)
+          {
+            if (c.model != ModelKind::torsional)
+              throw InputError("Dynamics/Operating/Tooth inertia", "position dependent",
+                               "constant with Dynamics/Model = DTE (the 1-DOF model has no gear angles)");
+            Jt1_theta = std::make_shared<PeriodicInertia>(tc.theta_A, tc.period, tc.J1);
+            Jt2_theta = std::make_shared<PeriodicInertia>(tc.theta_A, tc.period, tc.J2);
+            const auto [lo1, hi1] = std::minmax_element(tc.J1.begin(), tc.J1.end());
+            const auto [lo2, hi2] = std::minmax_element(tc.J2.begin(), tc.J2.end());
+            note("tooth inertia J_t(theta) in the equations of motion: J_tooth1 " + to_string_g(*lo1) + " .. " +
+                 to_string_g(*hi1) + " kg m^2, J_tooth2 " + to_string_g(*lo2) + " .. " + to_string_g(*hi2) +
+                 " kg m^2");
+          }
+        else
+          J1 += tc.mean1, J2 += tc.mean2;
       }
     note(fmt("mean mesh stiffness per face width", law->mean_stiffness() / c.face_width / 1e9,
              "N/(mm um)"));
@@ -209,6 +209,8 @@ namespace gearfem::dynamics
     p.input_torque = c.input_torque, p.output_torque = c.output_torque;
     p.ramp_time = c.ramp_time, p.speed = c.speed, p.speed_source = c.speed_source;
     p.zeta = c.zeta, p.damping_only_in_contact = c.damping_only_in_contact;
+    p.start_at_rest_deflection = c.start_at_rest_deflection;
+    p.tooth_inertia1 = Jt1_theta, p.tooth_inertia2 = Jt2_theta;
     auto m = std::make_unique<TorsionalModel>(std::move(law), contact, p);
     note(fmt("equivalent mass", m->equivalent_mass(), "kg"));
     note(fmt("linear natural frequency", m->linear_natural_frequency(), "Hz"));

@@ -72,6 +72,10 @@ namespace gearfem::dynamics
     double zeta = 0.02;
     bool damping_only_in_contact = false;
     bool tooth_mass = false, tooth_mass_energy_weighting = false;
+    /// Tooth inertia as the mean over a mesh period (false) or as J_t(theta) in the
+    /// equations of motion (true; torsional model only).
+    bool tooth_inertia_position_dependent = false;
+    bool start_at_rest_deflection = false; ///< delta(0) = 0 (zero initial conditions) instead of F/kbar
     // Kahraman-Singh mode (dimensionless).
     double ks_zeta = 0.05, ks_force = 0.1, ks_frequency = 0.9;
     std::vector<double> ks_cos = {-0.2, -0.1, -0.05};

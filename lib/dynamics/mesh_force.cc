@@ -61,6 +61,17 @@ namespace gearfem::dynamics
     return kbar_ * k;
   }
 
+  bool FourierStiffnessLaw::position_independent() const
+  {
+    for (const double c : a_)
+      if (c != 0.0)
+        return false;
+    for (const double c : b_)
+      if (c != 0.0)
+        return false;
+    return true;
+  }
+
   double FourierStiffnessLaw::force(double theta, double delta, int) const
   {
     return stiffness(theta) * delta;

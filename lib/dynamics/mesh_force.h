@@ -34,6 +34,9 @@ namespace gearfem::dynamics
     virtual double mean_stiffness() const = 0;
     /// Evaluations outside the law's validity range (tables); 0 for closed forms.
     virtual long out_of_range_count() const { return 0; }
+    /// True when the force does not depend on theta (a conservative spring: the energy
+    /// balance of MeshModel::conservative() applies).
+    virtual bool position_independent() const { return false; }
     /// True if the law carries its own reverse-flank (back contact) branch and backlash
     /// (a two-sided mesh table); the contact logic then uses reverse_force() and backlash()
     /// instead of mapping the drive law onto the coast flank.
@@ -68,6 +71,7 @@ namespace gearfem::dynamics
     double force(double theta, double delta, int) const override;
     double stiffness(double theta) const;
     double mean_stiffness() const override { return kbar_; }
+    bool position_independent() const override;
     const std::vector<double> &cos_coefficients() const { return a_; }
     const std::vector<double> &sin_coefficients() const { return b_; }
     std::unique_ptr<MeshForceLaw> clone() const override

@@ -83,6 +83,29 @@ namespace gearfem::dynamics
     return f;
   }
 
+  double MeshModel::elastic_energy(double t, const State &x) const
+  {
+    const double th = mesh_position(t, x), d = compression(t, x);
+    const MeshMode m = classify(th, d);
+    if (m.s == 0)
+      return 0.0;
+    // Compression of the active flank c and the force along it, F(c); V = int_0^c F dc'.
+    const double c = m.s == 1 ? d : -d - contact_.backlash;
+    static const double xg[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                 0.9602898564975363};
+    static const double wg[4] = {0.3626837833783620, 0.3137066053877759, 0.2223810344533745,
+                                 0.1012285362903763};
+    double V = 0;
+    for (int k = 0; k < 4; ++k)
+      for (const double sgn : {-1.0, 1.0})
+        {
+          const double ck = 0.5 * c * (1 + sgn * xg[k]);
+          const double dk = m.s == 1 ? ck : -ck - contact_.backlash;
+          V += wg[k] * std::abs(elastic_force(th, dk, m));
+        }
+    return 0.5 * c * V;
+  }
+
   int MeshModel::contact_state(double t, const State &x) const
   {
     return contact_.state(compression(t, x));
@@ -156,15 +179,6 @@ namespace gearfem::dynamics
     return x;
   }
 
-  // ---------------------------------------------------------------- tooth inertia
-  double tooth_inertia(double tooth_mass, double load_radius, double pairs_in_contact,
-                       bool energy_weighting)
-  {
-    // int_0^1 s ds = 1/2 ; int_0^1 s^2 ds = 1/3 for delta(s)/delta0 = s (linear shape).
-    const double w = energy_weighting ? 1.0 / 3.0 : 0.5;
-    return pairs_in_contact * w * tooth_mass * load_radius * load_radius;
-  }
-
   // ---------------------------------------------------------------- TorsionalModel
   TorsionalModel::TorsionalModel(std::unique_ptr<MeshForceLaw> law, const ContactLogic &contact,
                                  const Parameters &p)
@@ -193,9 +207,59 @@ namespace gearfem::dynamics
     return p_.ramp_time > 0 ? std::min(1.0, t / p_.ramp_time) : 1.0;
   }
 
+  double TorsionalModel::mean_inertia(int i) const
+  {
+    const auto &Jt = i == 1 ? p_.tooth_inertia1 : p_.tooth_inertia2;
+    return (i == 1 ? p_.inertia1 : p_.inertia2) + (Jt ? Jt->mean() : 0.0);
+  }
+
+  double TorsionalModel::inertia(int i, const State &x, double *derivative) const
+  {
+    const auto &Jt = i == 1 ? p_.tooth_inertia1 : p_.tooth_inertia2;
+    const double J0 = i == 1 ? p_.inertia1 : p_.inertia2;
+    if (derivative)
+      *derivative = 0.0;
+    if (!Jt || (i == 1 && p_.speed_source))
+      return J0;
+    // Each gear's own angle as a mesh position: theta_1 = th1, theta_2 = (r_b2/r_b1) th2.
+    const double q = i == 1 ? 1.0 : p_.base_radius2 / p_.base_radius1;
+    const double th = q * x[i == 1 || p_.speed_source ? 0 : 2];
+    if (derivative)
+      *derivative = q * Jt->derivative(th);
+    return J0 + Jt->value(th);
+  }
+
+  std::vector<double> TorsionalModel::angle_deviations(double t, const State &x) const
+  {
+    const double w2 = p_.speed * p_.base_radius1 / p_.base_radius2;
+    if (p_.speed_source)
+      return {0.0, x[0] - w2 * t};
+    return {x[0] - p_.speed * t, x[2] - w2 * t};
+  }
+
+  bool TorsionalModel::conservative() const
+  {
+    return zeta_ == 0.0 && p_.ramp_time == 0.0 && !p_.speed_source && law_->position_independent() &&
+           p_.inertia_velocity_terms;
+  }
+
+  double TorsionalModel::kinetic_energy(double, const State &x) const
+  {
+    if (p_.speed_source)
+      return 0.5 * inertia(2, x) * x[1] * x[1];
+    return 0.5 * inertia(1, x) * x[1] * x[1] + 0.5 * inertia(2, x) * x[3] * x[3];
+  }
+
+  double TorsionalModel::torque_work(const State &x0, const State &x) const
+  {
+    if (p_.speed_source)
+      return 0.0;
+    return p_.input_torque * (x[0] - x0[0]) - output_torque() * (x[2] - x0[2]);
+  }
+
   double TorsionalModel::equivalent_mass() const
   {
-    const double r1 = p_.base_radius1, r2 = p_.base_radius2, I1 = p_.inertia1, I2 = p_.inertia2;
+    const double r1 = p_.base_radius1, r2 = p_.base_radius2, I1 = mean_inertia(1), I2 = mean_inertia(2);
     if (p_.speed_source)
       return I2 / (r2 * r2);
     return I1 * I2 / (I2 * r1 * r1 + I1 * r2 * r2);
@@ -224,16 +288,22 @@ namespace gearfem::dynamics
     const double F =
       frozen_force(mesh_position(t, x), compression(t, x), compression_rate(t, x));
     dxdt.resize(x.size());
+    // J_i th_i'' + 1/2 J_i'(th_i) th_i'^2 = torque_i (Lagrange, T = 1/2 sum J_i th_i'^2).
+    const double v = p_.inertia_velocity_terms ? 0.5 : 0.0;
+    double dJ2;
+    const double J2 = inertia(2, x, &dJ2);
     if (p_.speed_source)
       {
         dxdt[0] = x[1];
-        dxdt[1] = (p_.base_radius2 * F - output_torque() * r) / p_.inertia2;
+        dxdt[1] = (p_.base_radius2 * F - output_torque() * r - v * dJ2 * x[1] * x[1]) / J2;
         return;
       }
+    double dJ1;
+    const double J1 = inertia(1, x, &dJ1);
     dxdt[0] = x[1];
-    dxdt[1] = (p_.input_torque * r - p_.base_radius1 * F) / p_.inertia1;
+    dxdt[1] = (p_.input_torque * r - p_.base_radius1 * F - v * dJ1 * x[1] * x[1]) / J1;
     dxdt[2] = x[3];
-    dxdt[3] = (p_.base_radius2 * F - output_torque() * r) / p_.inertia2;
+    dxdt[3] = (p_.base_radius2 * F - output_torque() * r - v * dJ2 * x[3] * x[3]) / J2;
   }
 
   void TorsionalModel::set_pinion_speed(double w)

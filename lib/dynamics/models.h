@@ -13,6 +13,7 @@
 // Damping c = 2 zeta sqrt(kbar m_eq), optionally acting only in contact (s != 0).
 #include "dynamics/mesh_force.h"
 #include "dynamics/ode.h"
+#include "dynamics/tooth_mass.h"
 
 #include <functional>
 #include <memory>
@@ -74,6 +75,21 @@ namespace gearfem::dynamics
     /// Linear natural frequency sqrt(kbar / m_eq) / (2 pi) [Hz].
     double linear_natural_frequency() const;
 
+    /// Vibratory angles of the gears (angle minus the nominal rotation at the pinion speed)
+    /// [rad]; empty for models without rotational coordinates.
+    virtual std::vector<double> angle_deviations(double /*t*/, const State & /*x*/) const { return {}; }
+    /// True when the model conserves energy up to the work of its input torques: no damping,
+    /// no torque ramp, and a mesh force that does not depend on the mesh position (otherwise
+    /// the stiffness variation does work on the pair).
+    virtual bool conservative() const { return false; }
+    /// Kinetic energy [J] (0 for models without one).
+    virtual double kinetic_energy(double /*t*/, const State & /*x*/) const { return 0.0; }
+    /// Work of the input and output torques from (t0, x0) to (t, x) [J] (constant torques).
+    virtual double torque_work(const State & /*x0*/, const State & /*x*/) const { return 0.0; }
+    /// Elastic energy of the mesh [J]: the integral of the elastic force over the compression
+    /// of the active flank (drive: delta; back: -delta - b; none in the gap), 8-point Gauss.
+    double elastic_energy(double t, const State &x) const;
+
   protected:
     /// Force along the line of action (elastic + damping) with the frozen mode [N].
     double frozen_force(double theta, double delta, double delta_rate) const;
@@ -123,14 +139,12 @@ namespace gearfem::dynamics
     Parameters p_;
   };
 
-  /// Equivalent tooth inertia (Gkimisis 2019; the NTUA tooth-mass thesis): J = n_pairs w m_tooth r^2 with the
-  /// deflection-shape weight w = 1/2 for (delta/delta0) weighting (the thesis) or 1/3 for
-  /// (delta/delta0)^2 (kinetic-energy equivalence), for a deflection shape linear from the
-  /// root (0) to the load point (1) and mass uniform along the height.
-  double tooth_inertia(double tooth_mass, double load_radius, double pairs_in_contact,
-                       bool energy_weighting);
-
   /// 2-DOF torsional model (Gkimisis 2019, 4.1-4.2), torque-driven or with a speed source on gear 1.
+  /// Optional position-dependent tooth inertias J_t,i(theta) (tooth_mass.h): gear i has
+  /// J_i = I_i + J_t,i(theta_i) with theta_1 = th1 and theta_2 = (r_b2/r_b1) th2 (each gear's
+  /// own angle expressed as a mesh position), and Lagrange's equations of
+  /// T = 1/2 sum J_i(theta_i) th_i'^2 give J_i th_i'' + 1/2 J_i'(th_i) th_i'^2 = torque_i
+  /// (docs/dynamics.md, "Position-dependent tooth inertia").
   class TorsionalModel : public MeshModel
   {
   public:
@@ -146,6 +160,11 @@ namespace gearfem::dynamics
       double zeta = 0.02;
       bool damping_only_in_contact = false;
       bool start_at_rest_deflection = false; ///< false: delta(0) = F/kbar; true: delta(0) = 0
+      /// Position-dependent tooth inertias added to inertia1/2 [kg m^2] as functions of the
+      /// mesh position [rad]; null: none.
+      std::shared_ptr<const PeriodicInertia> tooth_inertia1, tooth_inertia2;
+      /// Keep the 1/2 J'(theta) th'^2 terms (false only to show their effect in tests).
+      bool inertia_velocity_terms = true;
     };
     TorsionalModel(std::unique_ptr<MeshForceLaw> law, const ContactLogic &contact,
                    const Parameters &p);
@@ -167,6 +186,15 @@ namespace gearfem::dynamics
     }
     double output_torque() const;
     const Parameters &parameters() const { return p_; }
+    /// Total inertia of gear i (1 or 2) at the state x and its derivative with respect to
+    /// that gear's angle [kg m^2], [kg m^2/rad].
+    double inertia(int i, const State &x, double *derivative = nullptr) const;
+    /// Mean total inertia of gear i over a mesh period [kg m^2].
+    double mean_inertia(int i) const;
+    std::vector<double> angle_deviations(double t, const State &x) const override;
+    bool conservative() const override;
+    double kinetic_energy(double t, const State &x) const override;
+    double torque_work(const State &x0, const State &x) const override;
 
   private:
     double ramp(double t) const;

@@ -155,9 +155,18 @@ namespace gearfem::dynamics
                       "zeta: c = 2 zeta sqrt(kbar m_eq) [-]. Allowed: 0 to 1; > 0 with a speed sweep (an "
                       "undamped sweep never settles).");
     prm.declare_entry("Damping only in contact", "false", Bool(), "[-]");
-    prm.declare_entry("Tooth mass", "false", Bool(), "Add the equivalent tooth inertia (the NTUA tooth-mass thesis) [-].");
+    prm.declare_entry("Tooth mass", "false", Bool(),
+                      "Add the equivalent tooth inertia of the NTUA tooth-mass thesis (eqs. 3.1-3.6: m_eq "
+                      "along the path of contact of the generated pair, J_t = sum m_eq r^2 over the pairs "
+                      "in contact) [-].");
     prm.declare_entry("Tooth mass weighting", "linear", Selection("linear|quadratic"),
-                      "(delta/delta0) as in the NTUA tooth-mass thesis, or (delta/delta0)^2 (kinetic energy) [-].");
+                      "linear: (delta/delta0) as in the NTUA tooth-mass thesis, with delta(y) = delta_f + "
+                      "(y/Y) delta_b below the load height Y and delta0 above; quadratic: (delta/delta0)^2 "
+                      "(kinetic-energy equivalence) [-].");
+    prm.declare_entry("Tooth inertia", "constant", Selection("constant|position dependent"),
+                      "With Tooth mass: the mean of J_t over a mesh period added to the inertias, or "
+                      "J_t(theta) in the equations of motion with the 1/2 J'(theta) theta'^2 terms "
+                      "(torsional model only) [-].");
     prm.declare_entry("Start from rest deflection", "false", Bool(),
                       "true: delta(0) = 0 (zero initial conditions); false: static deflection [-].");
     prm.leave_subsection();
@@ -298,6 +307,8 @@ namespace gearfem::dynamics
     c.damping_only_in_contact = params::get_bool(prm, "Damping only in contact");
     c.tooth_mass = params::get_bool(prm, "Tooth mass");
     c.tooth_mass_energy_weighting = prm.get("Tooth mass weighting") == "quadratic";
+    c.tooth_inertia_position_dependent = prm.get("Tooth inertia") == "position dependent";
+    c.start_at_rest_deflection = params::get_bool(prm, "Start from rest deflection");
     prm.leave_subsection();
 
     if (c.law == LawKind::ste)

@@ -57,11 +57,20 @@ namespace gearfem::dynamics
     t.add_column(u.ks ? "x rate" : "DTE rate", u.v_unit);
     t.add_column("mesh force", u.f_unit);
     t.add_column("contact state", "-");
+    const bool angles = !u.ks && r.angle1.size() == r.t.size() && !r.t.empty();
+    if (angles)
+      {
+        t.add_column("pinion vibration angle", "urad");
+        t.add_column("gear vibration angle", "urad");
+      }
     for (std::size_t i = 0; i < r.t.size(); ++i)
       {
         const double th = m.pinion_speed() * r.t[i];
-        t.add_row({r.t[i], u.ks ? th : th / units::deg, r.delta[i] * u.d_scale + u.d_offset, r.rate[i] * u.v_scale,
-                   r.force[i], double(r.state[i])});
+        std::vector<double> row = {r.t[i], u.ks ? th : th / units::deg, r.delta[i] * u.d_scale + u.d_offset,
+                                   r.rate[i] * u.v_scale, r.force[i], double(r.state[i])};
+        if (angles)
+          row.push_back(r.angle1[i] * 1e6), row.push_back(r.angle2[i] * 1e6);
+        t.add_row(row);
       }
     Table p;
     p.add_column("mesh period", "-");
@@ -130,6 +139,13 @@ namespace gearfem::dynamics
                 << (r.period_multiplicity == 0 ? " (not periodic within the run)" : "") << "\n"
                 << "settled [-] = " << (r.settled ? "yes" : "no") << " after " << r.transient_periods
                 << " periods\n";
+        if (std::isfinite(r.angle_amplitude1))
+          summary << "pinion angle amplitude [rad] = " << r.angle_amplitude1 << "\n"
+                  << "gear angle amplitude [rad] = " << r.angle_amplitude2 << "\n";
+        if (std::isfinite(r.energy_balance))
+          summary << "energy balance (change of kinetic + elastic energy - torque work) / initial kinetic "
+                     "energy [-] = "
+                  << r.energy_balance << "\n";
         if (out)
           *out << summary.str();
       }
