@@ -7,6 +7,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
+
 namespace gearfem::commands
 {
   namespace
@@ -42,8 +44,13 @@ namespace gearfem::commands
         return run_relief(prm, ctx);
       std::ostream           &out   = *ctx.out;
       const optimise::Study   study = optimise::parse_study_parameters(prm);
+      const bool multistart = std::any_of(study.runs.begin(), study.runs.end(),
+                                          [](const optimise::OptimiserSettings &o) { return o.multistart > 0; });
       out << "optimise: Koronaios 2021 " << optimise::to_string(study.kind) << ", " << study.runs.size()
-          << " method(s), start point feasible\n";
+          << " method(s), "
+          << (multistart ? "multistart from random points of the box (the start point need not be feasible)" :
+                           "start point feasible")
+          << "\n";
       if (ctx.validate_only)
         return;
       const optimise::StudyResult r = optimise::run_study(study, &out);

@@ -99,14 +99,17 @@ namespace gearfem::optimise
     return names[c];
   }
 
-  Design::Design(DesignKind kind, const PairData &pair)
+  Design::Design(DesignKind kind, const PairData &pair, FixedEnd fixed_end)
     : kind_(kind)
     , pair_(pair)
+    , fixed_end_(fixed_end)
   {
     const Involute inv = involute_of(pair);
     // 0.001 m beyond the tip circle, so that the flank written to optimum.prm (12 digits)
     // still reaches the tip circle when gearfem generates it; sampling stops at r_a1.
     tip_point_ = inv.at_radius(pair.tip_radius(1) + 1e-3 * pair.module) / pair.module;
+    if (kind_ == DesignKind::case2_flank)
+      root_point_ = involute_fit().front();
   }
 
   int Design::n_free() const
@@ -118,6 +121,8 @@ namespace gearfem::optimise
   {
     if (kind_ == DesignKind::case1_rack)
       return {"u1", "u2", "v2", "u3"};
+    if (kind_ == DesignKind::case2_flank && fixed_end_ == FixedEnd::root)
+      return {"x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"};
     if (kind_ == DesignKind::case2_flank)
       return {"x0", "y0", "x1", "y1", "x2", "y2", "x3", "y3"};
     return {};
@@ -129,6 +134,19 @@ namespace gearfem::optimise
       return {units::pi / 8, units::pi / 4, 0.0, 3 * units::pi / 8};
     if (kind_ != DesignKind::case2_flank)
       return {};
+    std::vector<Vec2> P = involute_fit();
+    if (fixed_end_ == FixedEnd::tip)
+      P.pop_back();
+    else
+      P.erase(P.begin());
+    std::vector<double> x;
+    for (const Vec2 &q : P)
+      x.push_back(q.x()), x.push_back(q.y());
+    return x;
+  }
+
+  std::vector<Vec2> Design::involute_fit() const
+  {
     // Least-squares fit of P0..P3 (P4 fixed at the tip point) to the involute, parameters
     // uniform in roll angle.
     const Involute inv = involute_of(pair_);
@@ -147,10 +165,11 @@ namespace gearfem::optimise
         B(j, 0) = rhs.x(), B(j, 1) = rhs.y();
       }
     const Eigen::MatrixXd P = A.colPivHouseholderQr().solve(B);
-    std::vector<double>   x;
+    std::vector<Vec2>     cp;
     for (int i = 0; i < 4; ++i)
-      x.push_back(P(i, 0)), x.push_back(P(i, 1));
-    return x;
+      cp.emplace_back(P(i, 0), P(i, 1));
+    cp.push_back(tip_point_);
+    return cp;
   }
 
   std::vector<Vec2> Design::control_points(const std::vector<double> &x) const
@@ -160,6 +179,8 @@ namespace gearfem::optimise
                        std::to_string(n_free()) + " for " + to_string(kind_));
     if (kind_ == DesignKind::case1_rack)
       return {Vec2(0, 1), Vec2(x[0], 1), Vec2(x[1], x[2]), Vec2(x[3], -1), Vec2(units::pi / 2, -1)};
+    if (kind_ == DesignKind::case2_flank && fixed_end_ == FixedEnd::root)
+      return {root_point_, Vec2(x[0], x[1]), Vec2(x[2], x[3]), Vec2(x[4], x[5]), Vec2(x[6], x[7])};
     if (kind_ == DesignKind::case2_flank)
       return {Vec2(x[0], x[1]), Vec2(x[2], x[3]), Vec2(x[4], x[5]), Vec2(x[6], x[7]), tip_point_};
     return {};
@@ -217,12 +238,13 @@ namespace gearfem::optimise
     return g;
   }
 
-  double objective(DesignKind kind, const Statistics &st, double integral, double eps)
+  double objective(DesignKind kind, const Statistics &st, double integral, double eps,
+                   const std::array<double, 3> &w)
   {
     const double k = 1e-3; // 1/m -> 1/mm
     if (kind == DesignKind::case1_rack || kind == DesignKind::sinusoid)
       return k * (st.max_abs + st.mean_abs + st.std);
-    return 2.5 * integral + k * st.std + 0.1 / eps;
+    return w[0] * integral + w[1] * k * st.std + w[2] / eps;
   }
 
   Evaluation Design::evaluate(const std::vector<double> &x, const EvaluationSettings &s) const

@@ -21,6 +21,7 @@
 #include "base/units.h"
 #include "optimise/kinematics.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +62,8 @@ namespace gearfem::optimise
     /// Run gearfem's own design checks (GearPair: interference, undercut into the active
     /// profile, pointed tip) on every case-2 evaluation.
     bool design_checks = true;
+    /// Case 2's objective w0 int (1/R)^2 dx + w1 std(1/R) + w2/eps (thesis: 2.5, 1, 0.1).
+    std::array<double, 3> weights = {2.5, 1.0, 0.1};
   };
 
   /// Named constraints, each c <= 0 when met (dimensionless).
@@ -93,11 +96,19 @@ namespace gearfem::optimise
     std::vector<ContactSample> samples;
   };
 
+  /// Case 2: which end control point is fixed (the thesis fixes 2 of the 10 coordinates
+  /// without saying which).
+  enum class FixedEnd
+  {
+    tip, ///< P4 on the involute 0.001 m beyond the tip circle; P0..P3 free (tip thickness kept)
+    root ///< P0 at the start fit's P0 (below the SAP); P1..P4 free (the tip may move)
+  };
+
   /// A design: its kind, the pair and the free coordinates.
   class Design
   {
   public:
-    Design(DesignKind kind, const PairData &pair);
+    Design(DesignKind kind, const PairData &pair, FixedEnd fixed_end = FixedEnd::tip);
     DesignKind kind() const { return kind_; }
     const PairData &pair() const { return pair_; }
     /// Number of free coordinates (0 for the references, 4 case 1, 8 case 2).
@@ -120,12 +131,17 @@ namespace gearfem::optimise
 
   private:
     Evaluation evaluate_unchecked(const std::vector<double> &x, const EvaluationSettings &s) const;
+    /// Case 2: least-squares fit of P0..P3 to the involute with P4 = tip_point_ [module units].
+    std::vector<Vec2> involute_fit() const;
     DesignKind kind_;
     PairData pair_;
-    Vec2 tip_point_; ///< case 2: fixed P4 [module units]
+    FixedEnd fixed_end_;
+    Vec2 tip_point_;  ///< case 2: P4 of the start fit [module units]
+    Vec2 root_point_; ///< case 2: P0 of the start fit [module units]
   };
 
-  /// Objective of a case from the statistics [1/mm].
+  /// Objective of a case from the statistics [1/mm]; `weights` are case 2's (w0, w1, w2) of
+  /// w0 int (1/R)^2 dx + w1 std(1/R) + w2/eps (EvaluationSettings::weights).
   double objective(DesignKind kind, const Statistics &st_per_m, double integral_per_mm,
-                   double contact_ratio);
+                   double contact_ratio, const std::array<double, 3> &weights = {2.5, 1.0, 0.1});
 } // namespace gearfem::optimise

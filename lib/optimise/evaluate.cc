@@ -155,7 +155,7 @@ namespace gearfem::optimise
       }
     ev.x_extent  = std::abs(rotate(fl->point(ev.samples.back().t), turn).x() -
                             rotate(fl->point(ev.samples.front().t), turn).x()) * 1e3;
-    ev.objective = objective(kind_, ev.stats, ev.integral, ev.contact_ratio);
+    ev.objective = objective(kind_, ev.stats, ev.integral, ev.contact_ratio, s.weights);
     if (!std::isfinite(ev.objective))
       throw SolverError("objective not finite (contact ratio " + to_string_g(ev.contact_ratio) + ")");
 

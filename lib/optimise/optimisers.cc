@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 
 namespace gearfem::optimise
@@ -380,6 +381,7 @@ namespace gearfem::optimise
     require_greater("Optimiser/Golden-section tolerance", golden_tolerance, 0.0, "module units");
     require_range("Optimiser/Line-search steps", line_search_steps, 1, 10000);
     require_range("Optimiser/Population", population, 0, 100000);
+    require_range("Optimiser/Multistart", multistart, 0, 1000);
   }
 
   OptimiseResult optimise(const EvaluateFunction &f, const std::vector<double> &x0, const std::vector<double> &lb,
@@ -415,6 +417,80 @@ namespace gearfem::optimise
     return r;
   }
 
+  OptimiseResult multistart(const EvaluateFunction &f, const std::vector<double> &x0, const std::vector<double> &lb,
+                            const std::vector<double> &ub, const OptimiserSettings &settings,
+                            const ProgressCallback &progress)
+  {
+    settings.check();
+    const auto    t0 = std::chrono::steady_clock::now();
+    auto          seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    OptimiseResult r;
+    r.method  = settings.method;
+    r.x_start = x0;
+    r.start   = f(x0);
+    r.best    = r.start;
+    r.x_best  = x0;
+    bool found = false;
+    // Sampling phase: every point is an evaluation of the history.
+    std::vector<std::pair<double, std::vector<double>>> feasible;
+    auto record = [&](const std::vector<double> &x, const Evaluation &e) {
+      ++r.evaluations;
+      if (e.feasible)
+        {
+          feasible.emplace_back(e.objective, x);
+          if (!found || e.objective < r.best.objective)
+            r.best = e, r.x_best = x, found = true;
+        }
+      r.history.push_back({r.evaluations, e.computable ? e.objective : 0.0, e.feasible,
+                           found ? r.best.objective : r.start.objective, seconds()});
+    };
+    std::mt19937                           rng(settings.seed);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    const int                              n_draw = 20 * settings.multistart;
+    std::vector<double>                    x(x0.size());
+    for (int k = 0; k < n_draw; ++k)
+      {
+        for (std::size_t i = 0; i < x.size(); ++i)
+          x[i] = lb[i] + U(rng) * (ub[i] - lb[i]);
+        record(x, f(x));
+      }
+    if (feasible.empty() && !r.start.feasible)
+      throw InputError("Optimiser/Multistart", std::to_string(settings.multistart),
+                       "a number of starts whose box holds a feasible design",
+                       "neither the start point (" + r.start.reason + ") nor any of " + std::to_string(n_draw) +
+                         " random points of the box is feasible");
+    std::sort(feasible.begin(), feasible.end(),
+              [](const auto &a, const auto &b) { return a.first < b.first; });
+    if (static_cast<int>(feasible.size()) > settings.multistart)
+      feasible.resize(settings.multistart);
+    if (r.start.feasible)
+      feasible.insert(feasible.begin(), {r.start.objective, x0});
+    OptimiserSettings one = settings;
+    one.multistart        = 0;
+    int    improved_by    = -1;
+    double best_so_far    = found ? r.best.objective : r.start.objective;
+    for (std::size_t j = 0; j < feasible.size(); ++j)
+      {
+        const OptimiseResult q = optimise(f, feasible[j].second, lb, ub, one, progress, 0.05);
+        for (const auto &h : q.history)
+          {
+            ++r.evaluations;
+            if (h.feasible && h.objective < best_so_far)
+              best_so_far = h.objective;
+            r.history.push_back({r.evaluations, h.objective, h.feasible, best_so_far, seconds()});
+          }
+        if (q.best.feasible && (!r.best.feasible || q.best.objective < r.best.objective))
+          r.best = q.best, r.x_best = q.x_best, improved_by = static_cast<int>(j);
+      }
+    r.seconds     = seconds();
+    r.stop_reason = "multistart: best of " + std::to_string(feasible.size()) + " runs (" + std::to_string(n_draw) +
+                    " random points), best from " +
+                    (improved_by < 0 ? std::string("the sampling") :
+                     improved_by == 0 && r.start.feasible ? std::string("the start point") :
+                                                            "random start " + std::to_string(improved_by));
+    return r;
+  }
+
   OptimiseResult optimise(const Design &design, const std::vector<double> &x0, const EvaluationSettings &eval,
                           const OptimiserSettings &settings, const ProgressCallback &progress)
   {
@@ -423,6 +499,8 @@ namespace gearfem::optimise
     for (size_t i = 0; i < x0.size(); ++i)
       lb[i] = x0[i] - settings.bound, ub[i] = x0[i] + settings.bound;
     const EvaluateFunction f = [&](const std::vector<double> &x) { return design.evaluate(x, eval); };
-    return optimise(f, x0, lb, ub, settings, progress, 0.05);
+    if (settings.multistart == 0)
+      return optimise(f, x0, lb, ub, settings, progress, 0.05);
+    return multistart(f, x0, lb, ub, settings, progress);
   }
 } // namespace gearfem::optimise

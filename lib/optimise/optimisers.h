@@ -41,6 +41,11 @@ namespace gearfem::optimise
     int line_search_steps = 100;      ///< golden-section steps per line search (thesis: 100)
     unsigned int seed = 3;            ///< random seed of the global methods
     int population = 0;               ///< global methods: population (0 = NLopt's default)
+    /// Multistart (0 = off): 20 n points drawn uniformly in the box (seeded by `seed`) are
+    /// evaluated; the method runs from the start point (when feasible) and from the n best
+    /// feasible of them, each run with `max_evaluations`; the result is the best. The box
+    /// stays centred on the start point, which may then be infeasible.
+    int multistart = 0;
     /// Throws InputError naming "Optimiser/<entry>" for a value out of range.
     void check() const;
   };
@@ -84,6 +89,14 @@ namespace gearfem::optimise
                           const std::vector<double> &ub, const OptimiserSettings &settings,
                           const ProgressCallback &progress = nullptr, double initial_step = 0.05);
 
+  /// Multistart of `settings.method` in the box [lb, ub] (OptimiserSettings::multistart > 0):
+  /// the start point may be infeasible; InputError naming Optimiser/Multistart when neither
+  /// it nor any random point is feasible.
+  OptimiseResult multistart(const EvaluateFunction &f, const std::vector<double> &x0, const std::vector<double> &lb,
+                            const std::vector<double> &ub, const OptimiserSettings &settings,
+                            const ProgressCallback &progress = nullptr);
+
+  /// The design's box is x0 +- settings.bound; with settings.multistart > 0, multistart().
   OptimiseResult optimise(const Design &design, const std::vector<double> &x0,
                           const EvaluationSettings &eval, const OptimiserSettings &settings,
                           const ProgressCallback &progress = nullptr);

@@ -60,6 +60,14 @@ namespace gearfem::optimise
     prm.declare_entry("Start point", "", Anything(),
                       "Free coordinates, comma-separated (case 1: u1, u2, v2, u3; case 2: x0, y0, ..., "
                       "x3, y3); empty = the default start (docs/optimise.md). Units: multiples of the module.");
+    prm.declare_entry("Fixed end", "tip", Selection("tip|root"),
+                      "Case 2: the control point that stays fixed: tip = P4 on the involute just beyond the tip "
+                      "circle (P0..P3 free, tip thickness kept); root = P0 of the start fit (P1..P4 free). "
+                      "Units: none.");
+    prm.declare_entry("Objective weights", "2.5, 1, 0.1", Anything(),
+                      "Case 2: w0, w1, w2 of the objective w0 int (1/R)^2 dx + w1 std(1/R) + w2/eps "
+                      "(Koronaios 2021: 2.5, 1, 0.1). Units: w0 none (dx in mm), w1 none, w2 1/mm. "
+                      "Allowed: each 0 to 1e6, not all zero.");
     declare_relief_parameters(prm);
     prm.leave_subsection();
 
@@ -82,6 +90,10 @@ namespace gearfem::optimise
                       "Bracketing and golden-section steps per line search (thesis: 100). Units: none.");
     prm.declare_entry("Seed", "3", Integer(), "Random seed of the global methods. Units: none.");
     prm.declare_entry("Population", "0", Integer(), "Global methods; 0 = NLopt's default. Units: none.");
+    prm.declare_entry("Multistart", "0", Integer(),
+                      "0 = off; n > 0: 20 n random points of the box are evaluated and each method runs from "
+                      "the start point (when feasible) and the n best feasible of them; the start point may "
+                      "then be infeasible (it is the centre of the box). Units: none. Allowed: 0 to 1000.");
     prm.leave_subsection();
     // The case the tip-relief problem optimises (`gearfem solve` sections).
     solve::declare_gear_contact_input(prm);
@@ -113,6 +125,7 @@ namespace gearfem::optimise
     require_range("Optimiser/Seed", seed, 0, 2147483647);
     o.seed         = static_cast<unsigned int>(seed);
     o.population   = params::get_integer(prm, "Population");
+    o.multistart   = params::get_integer(prm, "Multistart");
     r.methods_text = prm.get("Methods");
     prm.leave_subsection();
     std::stringstream methods(r.methods_text);
@@ -146,6 +159,11 @@ namespace gearfem::optimise
     s.eval.start_radius      = params::get_double(prm, "Start radius") * 1e-3;
     s.eval.design_checks     = params::get_bool(prm, "Design checks");
     s.start                  = params::get_doubles(prm, "Start point");
+    s.fixed_end              = prm.get("Fixed end") == "root" ? FixedEnd::root : FixedEnd::tip;
+    const auto w             = params::get_doubles(prm, "Objective weights");
+    if (w.size() != 3)
+      throw InputError("Optimise/Objective weights", prm.get("Objective weights"), "three numbers w0, w1, w2");
+    s.eval.weights = {w[0], w[1], w[2]};
     prm.leave_subsection();
 
     const OptimiserSection o = read_optimiser_section(prm);

@@ -53,13 +53,27 @@ namespace gearfem::optimise
       throw InputError("Optimiser/Methods", "(empty)", "a list of " + method_names());
     for (const auto &o : s.runs)
       o.check();
-    const Design d(s.kind, s.pair);
+    const Design d(s.kind, s.pair, s.fixed_end);
     const auto   x0 = s.start.empty() ? d.default_start() : s.start;
     if (static_cast<int>(x0.size()) != d.n_free())
       throw InputError("Optimise/Start point", std::to_string(x0.size()) + " coordinates",
                        std::to_string(d.n_free()) + " coordinates for " + to_string(s.kind));
+    for (double w : s.eval.weights)
+      require_range("Optimise/Objective weights", w, 0.0, 1e6);
+    if (s.eval.weights[0] + s.eval.weights[1] + s.eval.weights[2] <= 0)
+      throw InputError("Optimise/Objective weights", "all zero", "at least one weight > 0");
+    if (s.kind != DesignKind::case2_flank && s.eval.weights != EvaluationSettings{}.weights)
+      throw InputError("Optimise/Objective weights", "other than 2.5, 1, 0.1 for case 1",
+                       "the default (case 1's objective max + mean + std has no weights)");
+    if (s.kind != DesignKind::case2_flank && s.fixed_end != FixedEnd::tip)
+      throw InputError("Optimise/Fixed end", "root for case 1", "tip (case 1 fixes its own points)");
+    // With a multistart, the start point is the centre of the box and may be infeasible
+    // (optimise() then needs a feasible random point, or names Optimiser/Multistart).
+    bool multistart = true;
+    for (const auto &o : s.runs)
+      multistart = multistart && o.multistart > 0;
     const Evaluation e = d.evaluate(x0, s.eval);
-    if (!e.feasible)
+    if (!e.feasible && !multistart)
       throw InputError("Optimise/Start point", "the start design", "a feasible design",
                        "infeasible start: " + e.reason);
   }
@@ -67,7 +81,7 @@ namespace gearfem::optimise
   StudyResult run_study(const Study &s, std::ostream *out)
   {
     check_study(s);
-    const Design d(s.kind, s.pair);
+    const Design d(s.kind, s.pair, s.fixed_end);
     const auto   x0 = s.start.empty() ? d.default_start() : s.start;
     EvaluationSettings rep = s.eval;
     rep.samples            = s.report_samples;
@@ -90,6 +104,11 @@ namespace gearfem::optimise
           *out << "optimise [" << to_string(o.method) << "]: " << run.result.evaluations << " evaluations, "
                << g(run.result.seconds, 3) << " s, objective " << g(run.result.start.objective) << " -> "
                << g(run.result.best.objective) << " 1/mm (" << run.result.stop_reason << ")\n";
+        if (out) // the constraints that bound the optimum (c within 1e-3 of 0)
+          for (int c = 0; c < n_constraints; ++c)
+            if (run.optimum.computable && run.optimum.constraints[c] > -1e-3)
+              *out << "  near-active constraint: " << constraint_name(c) << " (c = " << g(run.optimum.constraints[c], 3)
+                   << ")\n";
         r.runs.push_back(std::move(run));
         if (r.runs.back().optimum.objective < r.runs[r.best_run].optimum.objective)
           r.best_run = static_cast<int>(r.runs.size()) - 1;
@@ -103,7 +122,7 @@ namespace gearfem::optimise
            "std(1/R) [1/mm] | contact ratio | stop |\n|---|---|---|---|---|---|---|---|---|\n";
     auto row = [&](const std::string &name, const std::string &ev, const std::string &t, const Evaluation &e,
                    const std::string &stop) {
-      out << "| " << name << " | " << ev << " | " << t << " | " << g(objective(s.kind, e.stats, e.integral, e.contact_ratio), 5)
+      out << "| " << name << " | " << ev << " | " << t << " | " << g(objective(s.kind, e.stats, e.integral, e.contact_ratio, s.eval.weights), 5)
           << " | " << g(e.stats.mean_abs * 1e-3, 4) << " | " << g(e.stats.max_abs * 1e-3, 4) << " | "
           << g(e.stats.std * 1e-3, 4) << " | " << g(e.contact_ratio, 4) << " | " << stop << " |\n";
     };
@@ -115,11 +134,13 @@ namespace gearfem::optimise
           run.optimum, run.result.stop_reason);
     // The thesis' objective: case 1 from its row; case 2 estimated with int (1/R)^2 dx =
     // (mean^2 + std^2) times the position-2 extent of our best optimum (the thesis gives
-    // neither its flank nor its integral).
+    // neither its flank nor its integral), with the study's weights.
     const ThesisRow t = thesis(s.kind);
+    const auto     &w = s.eval.weights;
     const double    f = s.kind == DesignKind::case1_rack ?
                           t.mean + t.max + t.std :
-                          2.5 * (t.mean * t.mean + t.std * t.std) * r.runs[r.best_run].optimum.x_extent + t.std + 0.1 / t.eps;
+                          w[0] * (t.mean * t.mean + t.std * t.std) * r.runs[r.best_run].optimum.x_extent + w[1] * t.std +
+                            w[2] / t.eps;
     out << "| thesis optimum (" << to_string(s.kind) << ") | | | " << (s.kind == DesignKind::case1_rack ? "" : "~") << g(f, 5)
         << " | " << t.mean << " | " << t.max << " | " << t.std << " | "
         << (t.eps > 0 ? g(t.eps) : std::string("not stated")) << " | steepest descent |\n";
@@ -127,7 +148,7 @@ namespace gearfem::optimise
 
   void write_study(const Study &s, const StudyResult &r, const std::filesystem::path &dir)
   {
-    const Design d(s.kind, s.pair);
+    const Design d(s.kind, s.pair, s.fixed_end);
     {
       AtomicOutputFile f(dir / "optimise.csv");
       f.stream() << "method,evaluation,objective [1/mm],feasible,best feasible [1/mm],time [s]\n";
@@ -139,7 +160,13 @@ namespace gearfem::optimise
     }
     {
       AtomicOutputFile f(dir / "summary.md");
-      f.stream() << "# Koronaios 2021 " << to_string(s.kind) << " optimisation\n\n";
+      const auto &w = s.eval.weights;
+      f.stream() << "# Koronaios 2021 " << to_string(s.kind) << " optimisation";
+      if (s.kind == DesignKind::case2_flank && (w[0] != 2.5 || w[1] != 1.0 || w[2] != 0.1))
+        f.stream() << " (objective weights " << g(w[0]) << ", " << g(w[1]) << ", " << g(w[2]) << ")";
+      if (s.kind == DesignKind::case2_flank && s.fixed_end == FixedEnd::root)
+        f.stream() << " (P0 fixed)";
+      f.stream() << "\n\n";
       print_summary(s, r, f.stream());
       f.commit();
     }

@@ -14,6 +14,7 @@ namespace gearfem::optimise
   {
     DesignKind kind = DesignKind::case2_flank;
     PairData pair;
+    FixedEnd fixed_end = FixedEnd::tip; ///< case 2: the fixed end control point
     double face_width = 20e-3;          ///< written to optimum.prm [m]
     EvaluationSettings eval;            ///< used inside the optimisation
     int report_samples = 2001;          ///< samples of the reported statistics and curves
