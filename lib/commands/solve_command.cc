@@ -81,6 +81,8 @@ namespace gearfem::commands
           << contact::to_string(in.contact.method) << ", slave body " << in.contact.slave << ", "
           << (in.material[0].model == fem::PlaneModel::plane_stress ? "plane stress" : "plane strain")
           << "\n";
+      for (const auto &w : solve::input_warnings(in))
+        out << "warning: " << w << "\n";
       const tolerance::DeviationParameters deviations = tolerance::parse_deviation_parameters(prm);
       if (deviations.active())
         {

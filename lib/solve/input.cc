@@ -12,6 +12,7 @@
 #include "geometry/parameters.h"
 #include "io/journal.h"
 #include "mesh/parameters.h"
+#include "mesh/gear_mesh.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -169,6 +170,31 @@ namespace gearfem::solve
     (void)in.positions(); // checks the position list
     check_small_strain(*in.pair, pm, in.solve.torques);
     return in;
+  }
+
+  std::vector<std::string> input_warnings(const GearContactInput &in)
+  {
+    std::vector<std::string> w;
+    const auto &pair = *in.pair;
+    for (int i = 1; i <= 2; ++i)
+      {
+        const auto &g        = pair.gear(i);
+        const double r_sap   = i == 1 ? pair.point("A").r1 : pair.point("E").r2;
+        const double r_form  = g.radii().form;
+        const double h       = mesh::contact_size(in.mesh[i - 1], g.parameters().rack.module);
+        if (r_form > 0 && h > r_sap - r_form)
+          {
+            std::ostringstream s;
+            s.precision(3);
+            s << "gear " << i << ": Mesh/h_contact " << h * 1e3 << " mm is larger than the flank height "
+              << (r_sap - r_form) * 1e3 << " mm between its start of active profile (r " << r_sap * 1e3
+              << " mm) and its form circle (r_Ff " << r_form * 1e3
+              << " mm): the contact of the tooth entering mesh can leak into its fillet and inflate its root "
+                 "stress there; refine h_contact below that height for root stresses near the start of contact";
+            w.push_back(s.str());
+          }
+      }
+    return w;
   }
 
   std::vector<std::pair<std::string, double>> GearContactInput::positions() const
