@@ -248,11 +248,21 @@ namespace gearfem::geometry
     const double mean = std::accumulate(d.f_pt.begin(), d.f_pt.end(), 0.0) / z;
     for (auto &f : d.f_pt)
       f -= mean;
+    // Removing the mean can push a single pitch beyond f_pT, and the cumulative deviations
+    // of a random walk usually span more than F_pT: one common scale brings both within their
+    // tolerance and keeps the closure.
     const auto F = d.cumulative_pitch();
     const auto [lo, hi] = std::minmax_element(F.begin(), F.end());
+    double f_max = 0;
+    for (const double f : d.f_pt)
+      f_max = std::max(f_max, std::abs(f));
+    double scale = 1;
+    if (f_max > t.f_pT)
+      scale = std::min(scale, t.f_pT / f_max);
     if (*hi - *lo > t.F_pT)
-      for (auto &f : d.f_pt)
-        f *= t.F_pT / (*hi - *lo);
+      scale = std::min(scale, t.F_pT / (*hi - *lo));
+    for (auto &f : d.f_pt)
+      f *= scale;
     d.f_Ha.resize(std::size_t(z));
     for (auto &f : d.f_Ha)
       f = t.f_HaT * rng.draw(dist);

@@ -140,8 +140,9 @@ namespace gearfem::geometry
   const char *to_string(Distribution d);
 
   /// A seeded draw of a gear's deviations within tolerances `t` (ISO 1328-1 meanings):
-  /// - f_pt,k within +-f_pT, the mean removed (closure); when the cumulative deviations then
-  ///   span more than F_pT, all f_pt are scaled to span F_pT (a gear that passes inspection);
+  /// - f_pt,k within +-f_pT, the mean removed (closure); when a single pitch then exceeds f_pT
+  ///   or the cumulative deviations span more than F_pT, all f_pt are scaled by one factor to
+  ///   meet both (a gear that passes inspection);
   /// - f_Ha per tooth within +-f_HaT;
   /// - a parabolic form per tooth of amplitude within +-f_faT;
   /// - F_r within [0, F_rT] (half-normal for truncated_normal), e = F_r / 2, phase uniform.

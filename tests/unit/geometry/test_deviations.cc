@@ -113,6 +113,8 @@ TEST(Deviations, SeededDrawsWithinTolerances)
           const auto F = d.cumulative_pitch();
           const auto [lo, hi] = std::minmax_element(F.begin(), F.end());
           EXPECT_LE(*hi - *lo, t.F_pT * (1 + 1e-12));
+          for (const double f : d.f_pt)
+            EXPECT_LE(std::abs(f), t.f_pT * (1 + 1e-12));
           for (const double f : d.f_Ha)
             {
               EXPECT_LE(std::abs(f), t.f_HaT);
