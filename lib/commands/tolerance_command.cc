@@ -177,12 +177,16 @@ namespace gearfem::commands
       const auto samples = tolerance::merge_samples(ctx.output_dir, i->tol.samples, i->in.solve.torques.size());
       const auto stats   = tolerance::statistics(samples);
       tolerance::write_statistics(stats, ctx.output_dir / "statistics.csv");
-      write_file_atomically(ctx.output_dir / "summary.md", "# Tolerance study\n\n" + tolerance_table(*i) + "\n" +
-                                                             tolerance::statistics_table(stats));
+      const auto n_failed = tolerance::failed_samples(ctx.output_dir).size();
+      write_file_atomically(ctx.output_dir / "summary.md",
+                            "# Tolerance study\n\n" + tolerance_table(*i) + "\n" + tolerance::statistics_table(stats) +
+                              "\nfailed samples (not in the statistics; failed.rank*.csv): " + std::to_string(n_failed) +
+                              "\n");
       run_plot_script("plot_tolerance.py", {ctx.output_dir.string()}, out);
       const std::size_t complete = samples.size() / std::max<std::size_t>(1, i->in.solve.torques.size());
+      const auto failed          = tolerance::failed_samples(ctx.output_dir);
       *out << "\n" << tolerance::statistics_table(stats) << "samples complete: " << complete << " of "
-           << i->tol.samples << "; rank 0 solved " << solved << " now in " << std::setprecision(3) << cpu
+           << i->tol.samples << ", failed: " << failed.size() << "; rank 0 solved " << solved << " now in " << std::setprecision(3) << cpu
            << " CPU-s (" << (solved > 0 ? cpu / double(solved * pitches * long(i->in.positions().size()) *
                                                       long(i->in.solve.torques.size())) * 1e3 : 0.0)
            << " ms per solved position)\n";
@@ -194,10 +198,15 @@ namespace gearfem::commands
                << ", \"peak_memory_mb\": " << peak_memory_mb() << "}";
           ctx.outcome->record_members.emplace_back("cost", cost.str());
         }
-      if (!failure.empty() || complete < std::size_t(i->tol.samples))
+      for (const auto &[k, why] : failed)
+        *out << "failed sample " << k << ": " << why << "\n";
+      if (!failure.empty() || complete + failed.size() < std::size_t(i->tol.samples))
         throw SolverError((failure.empty() ? std::string("some samples did not finish") : failure) +
                           "\n  the finished samples are in " + ctx.output_dir.string() +
                           " (samples.rank*.csv); run the study again to resume");
+      // Like a batch with failed jobs: the statistics stand on the other samples, exit 4.
+      if (!failed.empty())
+        ctx.outcome->exit_status = 4;
     }
   } // namespace
 

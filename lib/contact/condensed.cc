@@ -111,7 +111,7 @@ namespace gearfem::contact
     const Eigen::VectorXd approach =
       -(c.a.cwiseProduct(dqs) + 0.5 * c.curvature.cwiseProduct(dqs.cwiseProduct(dqs)) + c.W * (ncp.lambda - lambda_b));
     for (int k = 0; k < m; ++k)
-      if (!c.cand[k].smooth && ncp.lambda[k] > 0 && std::abs(dq) > 1e-3 * std::abs(c.q_build))
+      if (!c.cand[k].smooth && ncp.lambda[k] > 0 && std::abs(dqs[k]) > 1e-3 * std::abs(c.q_build)) // its own rigid state q + s_k
         throw SolverError("condensed re-solve: stored candidate slave node " + std::to_string(c.cand[k].point.node) +
                           " of body " + std::to_string(c.cand[k].point.slave_body) +
                           ", whose gap is not smooth in the rotation (its closest point jumps), carries load away "

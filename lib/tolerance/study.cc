@@ -99,6 +99,30 @@ namespace gearfem::tolerance
     }
   } // namespace
 
+  std::map<long, std::string> failed_samples(const std::filesystem::path &dir)
+  {
+    std::map<long, std::string> failed;
+    if (!std::filesystem::exists(dir))
+      return failed;
+    for (const auto &e : std::filesystem::directory_iterator(dir))
+      {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("failed.rank", 0) != 0 || e.path().extension() != ".csv")
+          continue;
+        std::ifstream in(e.path());
+        std::string text;
+        while (std::getline(in, text))
+          {
+            const auto comma = text.find(',');
+            char *end        = nullptr;
+            const long i     = std::strtol(text.c_str(), &end, 10);
+            if (comma != std::string::npos && end == text.c_str() + comma)
+              failed[i] = text.substr(comma + 1);
+          }
+      }
+    return failed;
+  }
+
   std::vector<SampleResult> solve_sample(const condensed::CondensedCycle &cycle, const solve::GearContactInput &in,
                                          const DeviationParameters &dev, long sample, const post::PostOptions &post)
   {
@@ -145,14 +169,16 @@ namespace gearfem::tolerance
   long run_samples(const condensed::CondensedCycle &cycle, const solve::GearContactInput &in,
                    const DeviationParameters &dev, const StudyOptions &o)
   {
-    const auto done = read_journals(o.output_dir, in.solve.torques.size());
+    const auto done   = read_journals(o.output_dir, in.solve.torques.size());
+    const auto failed = failed_samples(o.output_dir); // not retried: the same draw fails again
     std::vector<long> todo;
     for (long i = o.rank; i < o.samples; i += o.size)
-      if (!done.count(i))
+      if (!done.count(i) && !failed.count(i))
         todo.push_back(i);
     if (o.out)
       *o.out << "tolerance: " << o.samples << " samples on " << o.size << " rank" << (o.size == 1 ? "" : "s") << ", "
-             << done.size() << " finished before; this rank: " << todo.size() << " to solve" << std::endl;
+             << done.size() << " finished and " << failed.size() << " failed before; this rank: " << todo.size()
+             << " to solve" << std::endl;
     const std::filesystem::path journal = o.output_dir / journal_name(o.rank);
     const bool fresh = !std::filesystem::exists(journal);
     std::ofstream j(journal, std::ios::app);
@@ -164,7 +190,24 @@ namespace gearfem::tolerance
     long n = 0;
     for (const long i : todo)
       {
-        const auto rows = solve_sample(cycle, in, dev, i, o.post);
+        std::vector<SampleResult> rows;
+        try
+          {
+            rows = solve_sample(cycle, in, dev, i, o.post);
+          }
+        catch (const SolverError &e)
+          {
+            // A sample the cycle cannot serve is recorded and the study goes on (like a failed
+            // batch job): failed.rank<r>.csv names it and the reason.
+            const auto file = o.output_dir / ("failed.rank" + std::to_string(o.rank) + ".csv");
+            std::ofstream f(file, std::ios::app);
+            std::string why = e.what();
+            std::replace(why.begin(), why.end(), '\n', ' ');
+            std::replace(why.begin(), why.end(), '"', '\'');
+            f << i << ",\"" << why << "\"\n" << std::flush;
+            ++n;
+            continue;
+          }
         std::string block;
         for (const auto &r : rows)
           block += line(r) + '\n';

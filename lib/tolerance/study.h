@@ -11,6 +11,7 @@
 #include "tolerance/parameters.h"
 
 #include <filesystem>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -59,10 +60,15 @@ namespace gearfem::tolerance
 
   /// This rank's part of the study: the samples i = rank, rank + size, ... not yet in its
   /// journal (output_dir/samples.rank<r>.csv, one line per finished sample, appended and
-  /// flushed: a killed study resumes where it stopped). Returns the number solved now.
-  /// SolverError from a sample stops the rank (its finished samples stay in the journal).
+  /// flushed: a killed study resumes where it stopped). Returns the number solved or failed
+  /// now; a sample that fails (SolverError) is recorded (failed_samples) and the rank goes on.
   long run_samples(const condensed::CondensedCycle &cycle, const solve::GearContactInput &in,
                    const DeviationParameters &dev, const StudyOptions &options);
+
+  /// The samples recorded as failed (failed.rank<r>.csv: sample, the solver's reason): a draw
+  /// the condensed cycle cannot serve (contact beyond its stored candidates) is recorded,
+  /// skipped, and not retried on resume.
+  std::map<long, std::string> failed_samples(const std::filesystem::path &output_dir);
 
   /// Rank 0, after every rank: read all journals (complete samples of `n_torques` lines),
   /// write samples.csv (atomically) and return the samples below `samples`, sorted.
