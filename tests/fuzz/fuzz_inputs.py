@@ -2,7 +2,8 @@
 """Mutation fuzzer for gearfem input files, over every command.
 
 Mutates every inputs/*.prm and the small seeds of tests/fuzz/seeds/ (one per command that
-has no input cheap enough to run: solve, condense, batch, optimise, calibrate) with a fixed
+has no input cheap enough to run: solve, condense, batch, optimise, calibrate, tolerance, and solve
+with manufacturing deviations) with a fixed
 seed, and runs each mutant through `gearfem <command> --validate`. A fraction of the mutants
 of the cheap inputs (the seeds, and the inputs that finish in seconds: CHEAP) also get a real
 run; mutants of the solve seed are re-solved on a condensed cycle (`--condensed`) half the
@@ -10,7 +11,7 @@ time. The set-up solves and condenses the solve seed once (the calibrate seed's 
 @RESULTS@, and the cycle).
 
 Every exit must be 0 or 2, or 3 for a real run (4 for a batch that ran with failed designs
-and merged them); never 1, a signal, or a run past the time limit. An exit 2 must print a "gearfem: error:" line naming the parameter and no "internal
+and merged them, or a tolerance study with samples recorded as failed); never 1, a signal, or a run past the time limit. An exit 2 must print a "gearfem: error:" line naming the parameter and no "internal
 error", an exit 3 a "gearfem: solver failure:" line with the solver's reason; an exit 0 of a real run must leave no nan/inf in its CSV
 files.
 
@@ -141,6 +142,8 @@ def classify(rc, err, mode, out, command):
         return "signal %d" % -rc
     if command == "batch" and mode == "run" and rc == 4:  # the documented partial failure
         return None if os.path.exists(os.path.join(out, "batch.csv")) else "exit 4 without batch.csv"
+    if command == "tolerance" and mode == "run" and rc == 4:  # samples recorded as failed
+        return None if os.path.exists(os.path.join(out, "samples.csv")) else "exit 4 without samples.csv"
     if rc not in (0, 2) and not (mode == "run" and rc == 3):
         return "exit %d" % rc
     if rc == 2 and ("gearfem: error:" not in err or "internal error" in err):
