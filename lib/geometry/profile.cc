@@ -533,6 +533,12 @@ namespace gearfem::geometry
             throw InputError(rn, "linear/parabolic", "none for B-spline profiles",
                              "tip relief is defined on involute flanks only");
           require_greater(rn + " amount", rel.amount / units::um, 0.0, "um");
+          // Practical reliefs are tens of um (a few hundredths of the module); a tenth of the
+          // module already removes much of the tip land, and far beyond it the relieved flank
+          // has no meaning (and its construction no bound on its cost).
+          if (rel.amount > 0.1 * r.module)
+            throw InputError(rn + " amount", to_string_g(rel.amount / units::um) + " um",
+                             "(0, " + to_string_g(0.1 * r.module / units::um) + "] um (a tenth of the module)");
           const Curve &f   = *gc[i_flank];
           auto         xi  = [&](double t) { return std::sqrt(std::max(0.0, f.point(t).squaredNorm() / (rb * rb) - 1)); };
           const double ta  = lo[i_flank], tm = 0.5 * (lo[i_flank] + hi[i_flank]);
