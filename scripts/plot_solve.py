@@ -365,6 +365,32 @@ def plot_root_stress(d, title, sweep, loa, ts):
     save(fig, os.path.join(d, "root_stress.png"))
 
 
+def plot_friction(d, title, sweep, pairs, loa, ts):
+    """Friction force per tooth pair (on the pinion, + towards its tip) and the mesh power loss."""
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for t, c in zip(ts, colours(len(ts))):
+        x, p = by_torque(sweep, t, "roll angle", "power loss")
+        st = style(len(x))
+        ax2.plot(x, p, st, color=c, ms=4, label=torque_label(t))
+        if pairs is not None and pairs.has("friction force"):
+            sub = pairs.subset([same(v, t) for v in pairs["torque"]])
+            for k in sorted(set(sub["pinion tooth"])):
+                m = [same(v, k) for v in sub["pinion tooth"]]
+                xs = [a for a, keep in zip(sub["roll angle"], m) if keep]
+                fs = [a for a, keep in zip(sub["friction force"], m) if keep]
+                ax1.plot(xs, fs, st, color=c, ms=3)
+    for ax in (ax1, ax2):
+        point_lines(ax, loa, labels=ax is ax1)
+        ax.grid(True, alpha=0.3)
+    ax1.axhline(0, color="k", lw=0.6)
+    ax1.set_ylabel("friction force on the pinion,\n+ towards its tip [N]")
+    ax2.set_ylabel("mesh power loss [W]")
+    ax2.set_xlabel(sweep.label("roll angle"))
+    ax2.legend(fontsize=8)
+    ax1.set_title(title + ": friction force per tooth pair and mesh power loss", pad=16)
+    save(fig, os.path.join(d, "friction.png"))
+
+
 def main():
     if len(sys.argv) < 2:
         print("usage: plot_solve.py <output folder> [title]", file=sys.stderr)
@@ -398,6 +424,9 @@ def main():
         ("root_stress.png", ("root stress pinion", "root stress gear"),
          lambda: plot_root_stress(d, title, sweep, loa, ts)),
     ]
+    if sweep.has("power loss") and max(abs(v) for v in sweep["power loss"]) > 0:
+        plots.append(("friction.png", ("power loss",),
+                      lambda: plot_friction(d, title, sweep, pairs, loa, ts)))
     for name, needs, plot in plots:
         absent = [n for n in needs if not sweep.has(n)]
         if absent:

@@ -16,6 +16,9 @@ namespace gearfem::contact
   {
     if (!solution.converged)
       throw SolverError("condense: the solution to condense did not converge");
+    if (options_.friction > 0)
+      throw InputError("Contact/Friction coefficient", to_string_g(options_.friction),
+                       "0 for a condensed cycle", "the condensed cycle stores the frictionless operator");
     const double q = solution.q;
     // The elastic state of the solution, from its nodal forces.
     for (int b = 1; b <= 2; ++b)

@@ -203,6 +203,12 @@ namespace gearfem::contact
     Drive drive;
     drive.kind = Drive::Kind::rotation;
     solver_    = std::make_unique<TwoBodyContact>(*surfaces_[0], *surfaces_[1], options_, drive);
+    // Friction slides along the pair's rigid kinematics: the pinion turns with the drive,
+    // gear 2 at the gear ratio in its own sense (docs/friction.md).
+    SlidingKinematics kin;
+    kin.omega2          = sense_[1] / sense_[0] / pair.ratio();
+    kin.reference_speed = pair.working_pitch_radius(1);
+    solver_->set_kinematics(kin);
     apply_micro_geometry();
   }
 

@@ -38,10 +38,27 @@ namespace gearfem::contact
       const Vec2 c = scene.placement[0].centre;
       return Vec2(-(x.y() - c.y()), x.x() - c.x());
     };
+    const double mu    = options_.friction;
+    const double v_tol = options_.friction_tolerance * kinematics_.reference_speed;
     Linearisation L;
     L.B[0].assign(m, {});
     L.B[1].assign(m, {});
     L.a.resize(m), L.ghat.resize(m), L.D.resize(m), L.lambda0.resize(m);
+    if (mu > 0)
+      {
+        L.F[0].assign(m, {});
+        L.F[1].assign(m, {});
+        L.af = Eigen::VectorXd::Zero(m);
+        L.slip = Eigen::VectorXd::Zero(m);
+        L.sliding = Eigen::VectorXd::Zero(m);
+      }
+    // Sliding velocity of the slave (body S) relative to the master along t = (-n_y, n_x)
+    // at the slave point x (pair frame), per unit drive rate.
+    const auto sliding = [&](int S, const Vec2 &xs, const Vec2 &xm, const Vec2 &n) {
+      return sliding_velocity(scene, S, xs, xm, n);
+    };
+    std::vector<double> coef_sum(m, 0.0);
+    L.approach = Eigen::VectorXd::Zero(m);
     std::vector<int> used[2];
     // Adds the gap of one slave point (its own nodal weights `slave_shape` on the slave face,
     // or the node itself) with weight `coef` to row k: the slave and master force
@@ -57,6 +74,26 @@ namespace gearfem::contact
       const Vec2 nM    = gp.pr.normal;
       const auto &cS   = cache_[S - 1];
       const auto &cM   = cache_[M - 1];
+      // Friction: the force on the slave per unit lambda is n + mu s t (pair frame), s = -sign
+      // of the sliding velocity, ramped below v_tol; the master takes the opposite.
+      double fs = 0;
+      Vec2 fS = nS, fM = nM, f_pair = gp.n_pair;
+      // Rigid velocities of the two material points in contact: the slave point and its
+      // closest point on the displaced master (they differ by the elastic displacements).
+      const Vec2 xs = P[S - 1].apply(gp.x), xm = P[M - 1].apply(gp.pr.point);
+      const Vec2 dv = rigid_velocity(scene, S, xs) - rigid_velocity(scene, M, xm);
+      L.approach[k] += coef * dv.dot(gp.n_pair);
+      coef_sum[k] += coef;
+      if (mu > 0)
+        {
+          const Vec2 t(-gp.n_pair.y(), gp.n_pair.x());
+          const double vs = dv.dot(t);
+          fs     = -std::clamp(vs / v_tol, -1.0, 1.0);
+          f_pair = gp.n_pair + mu * fs * t;
+          fS     = rotate(f_pair, -P[S - 1].angle);
+          fM     = rotate(f_pair, -P[M - 1].angle);
+          L.slip[k] += coef * fs;
+        }
       for (std::size_t l = 0; l < slave_nodes.size(); ++l)
         {
           const auto &sn = ss.nodes()[slave_nodes[l]];
@@ -65,6 +102,13 @@ namespace gearfem::contact
           L.B[S - 1][k].push_back({cS.index[sn.dof_y], v * nS.y()});
           if (S == 1)
             L.a[k] += v * gp.n_pair.dot(velocity(P[0].apply(sn.x)));
+          if (mu > 0)
+            {
+              L.F[S - 1][k].push_back({cS.index[sn.dof_x], v * fS.x()});
+              L.F[S - 1][k].push_back({cS.index[sn.dof_y], v * fS.y()});
+              if (S == 1)
+                L.af[k] += v * f_pair.dot(velocity(P[0].apply(sn.x)));
+            }
         }
       const auto &face = ms.faces()[gp.face];
       for (std::size_t j = 0; j < face.nodes.size(); ++j)
@@ -75,7 +119,25 @@ namespace gearfem::contact
           L.B[M - 1][k].push_back({cM.index[mn.dof_y], -v * nM.y()});
           if (M == 1)
             L.a[k] -= v * gp.n_pair.dot(velocity(P[0].apply(mn.x)));
+          if (mu > 0)
+            {
+              L.F[M - 1][k].push_back({cM.index[mn.dof_x], -v * fM.x()});
+              L.F[M - 1][k].push_back({cM.index[mn.dof_y], -v * fM.y()});
+              if (M == 1)
+                L.af[k] -= v * f_pair.dot(velocity(P[0].apply(mn.x)));
+            }
         }
+    };
+    // Merge repeated universe indices of a row.
+    const auto compress = [](std::vector<std::pair<int, double>> &row) {
+      std::sort(row.begin(), row.end());
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < row.size(); ++i)
+        if (n > 0 && row[n - 1].first == row[i].first)
+          row[n - 1].second += row[i].second;
+        else
+          row[n++] = row[i];
+      row.resize(n);
     };
     for (int k = 0; k < m; ++k)
       {
@@ -94,15 +156,15 @@ namespace gearfem::contact
             }
         for (int b = 0; b < 2; ++b)
           {
-            auto &row = L.B[b][k];
-            std::sort(row.begin(), row.end());
-            std::size_t n = 0;
-            for (std::size_t i = 0; i < row.size(); ++i)
-              if (n > 0 && row[n - 1].first == row[i].first)
-                row[n - 1].second += row[i].second;
-              else
-                row[n++] = row[i];
-            row.resize(n);
+            compress(L.B[b][k]);
+            if (mu > 0)
+              compress(L.F[b][k]);
+          }
+        L.approach[k] /= coef_sum[k] > 0 ? coef_sum[k] : 1.0;
+        if (mu > 0)
+          {
+            L.slip[k] /= coef_sum[k] > 0 ? coef_sum[k] : 1.0;
+            L.sliding[k] = sliding(S, P[S - 1].apply(nd.x), P[2 - S].apply(c.at.pr.point), c.at.n_pair);
           }
         double btu = 0;
         for (int b = 0; b < 2; ++b)
@@ -135,22 +197,54 @@ namespace gearfem::contact
     // column, so W is built from the columns C_b B_b (contiguous columns of the cache):
     // O(u m) instead of the O(u^2 m) of a dense product. Symmetrised (C is symmetric to
     // round-off).
+    // With friction, W_f = B^T C B_f: column k from the force directions of candidate k,
+    // not symmetrised.
     L.W = Eigen::MatrixXd::Zero(m, m);
     Eigen::VectorXd t;
     for (int b = 0; b < 2; ++b)
       for (int k = 0; k < m; ++k)
         {
-          if (L.B[b][k].empty())
+          const auto &col = L.forces(b)[k];
+          if (col.empty())
             continue;
           t.setZero(cache_[b].flex->C.rows());
-          for (const auto &[i, v] : L.B[b][k])
+          for (const auto &[i, v] : col)
             t.noalias() += v * cache_[b].flex->C.col(i);
           for (int l = 0; l < m; ++l)
             for (const auto &[j, w] : L.B[b][l])
               L.W(l, k) += w * t[j];
         }
-    L.W = 0.5 * (L.W + L.W.transpose()).eval();
+    if (mu == 0)
+      L.W = 0.5 * (L.W + L.W.transpose()).eval();
     return L;
+  }
+
+  Vec2 TwoBodyContact::rigid_velocity(const Scene &scene, int body, const Vec2 &x) const
+  {
+    if (body == 1)
+      {
+        if (drive_.kind == Drive::Kind::translation)
+          return drive_.direction;
+        const Vec2 c = scene.placement[0].centre;
+        return Vec2(-(x.y() - c.y()), x.x() - c.x());
+      }
+    const Vec2 c = scene.placement[1].centre;
+    return kinematics_.omega2 * Vec2(-(x.y() - c.y()), x.x() - c.x());
+  }
+
+  double TwoBodyContact::sliding_velocity(const Scene &scene, int S, const Vec2 &xs, const Vec2 &xm,
+                                          const Vec2 &n) const
+  {
+    const Vec2 t(-n.y(), n.x());
+    return (rigid_velocity(scene, S, xs) - rigid_velocity(scene, 3 - S, xm)).dot(t);
+  }
+
+  void TwoBodyContact::set_friction(double mu)
+  {
+    ContactOptions o = options_;
+    o.friction       = mu;
+    o.validate();
+    options_ = o;
   }
 
   void TwoBodyContact::fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
@@ -191,6 +285,14 @@ namespace gearfem::contact
         p.weight        = nd.weight;
         p.pressure      = node_p[c.S - 1][c.node];
         p.arm           = lin.a[k];
+        if (lin.slip.size())
+          {
+            p.friction = options_.friction * lambda[k] * lin.slip[k];
+            p.sliding  = lin.sliding[k];
+          }
+        else
+          p.sliding = sliding_velocity(scene, c.S, p.x, p.master_point, p.normal);
+        p.approach = lin.approach[k];
         out.max_penetration = std::max(out.max_penetration, -p.gap);
         out.points.push_back(p);
       }
@@ -198,7 +300,7 @@ namespace gearfem::contact
       {
         std::vector<double> f(cache_[b].dofs.size(), 0.0);
         for (int k = 0; k < m; ++k)
-          for (const auto &[i, v] : lin.B[b][k])
+          for (const auto &[i, v] : lin.forces(b)[k])
             f[i] += lambda[k] * v;
         for (std::size_t i = 0; i < f.size(); ++i)
           if (f[i] != 0)

@@ -10,9 +10,11 @@ namespace gearfem::contact
   /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
   NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                      const Eigen::VectorXd &lambda0, int max_iterations)
+                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in)
   {
     const int m = int(W.rows());
+    const Eigen::VectorXd &af = af_in.size() == m ? af_in : a;
+    const bool symmetric      = af_in.size() != m;
     NcpResult r;
     r.q = control == Control::displacement ? value : q0;
     r.lambda = Eigen::VectorXd::Zero(m);
@@ -62,7 +64,8 @@ namespace gearfem::contact
                 for (int j = 0; j < n; ++j)
                   K(i, j) = W(A[i], A[j]);
                 K(i, i) += D[A[i]];
-                K(i, n) = K(n, i) = a[A[i]];
+                K(i, n) = a[A[i]];
+                K(n, i) = af[A[i]];
                 rhs[i] = -ghat[A[i]];
               }
             K(n, n) = 0;
@@ -88,7 +91,8 @@ namespace gearfem::contact
                 K(i, i) += D[A[i]];
                 rhs[i] = -ghat[A[i]] - a[A[i]] * r.q;
               }
-            const Eigen::VectorXd x = K.ldlt().solve(rhs);
+            const Eigen::VectorXd x = symmetric ? Eigen::VectorXd(K.ldlt().solve(rhs))
+                                                : Eigen::VectorXd(K.partialPivLu().solve(rhs));
             for (int i = 0; i < n; ++i)
               r.lambda[A[i]] = x[i];
           }
@@ -116,15 +120,17 @@ namespace gearfem::contact
             if (n > 0)
               {
                 Eigen::MatrixXd K(n, n);
-                Eigen::VectorXd aa(n);
+                Eigen::VectorXd aa(n), afa(n);
                 for (int i = 0; i < n; ++i)
                   {
                     for (int j = 0; j < n; ++j)
                       K(i, j) = W(A[i], A[j]);
                     K(i, i) += D[A[i]];
-                    aa[i] = a[A[i]];
+                    aa[i]  = a[A[i]];
+                    afa[i] = af[A[i]];
                   }
-                r.tangent = aa.dot(K.ldlt().solve(aa));
+                // dT/dq = af_A^T (W_AA + D)^-1 a_A
+                r.tangent = symmetric ? aa.dot(K.ldlt().solve(aa)) : afa.dot(K.partialPivLu().solve(aa));
               }
             return r;
           }

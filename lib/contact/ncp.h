@@ -1,5 +1,5 @@
 #pragma once
-// The linear complementarity problem of frictionless contact on a fixed linearisation
+// The linear complementarity problem of contact on a fixed linearisation
 // g = ghat + a q + W lambda (TwoBodyContact): primal-dual active set for Lagrange
 // multipliers (D = 0; Hintermueller, Ito & Kunisch 2002, SIAM J. Optim. 13(3)) and the
 // semismooth Newton of the nodal penalty (D = 1/eps), with the drive coordinate q as an
@@ -26,8 +26,11 @@ namespace gearfem::contact
 
   /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
   /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
-  /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
+  /// [-af^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
+  /// `af`: the load arm when it differs from the gap's a (friction; empty: a). W may be
+  /// non-symmetric (friction): the active-set systems are solved by LU then.
   NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                      const Eigen::VectorXd &lambda0, int max_iterations);
+                      const Eigen::VectorXd &lambda0, int max_iterations,
+                      const Eigen::VectorXd &af = Eigen::VectorXd());
 } // namespace gearfem::contact

@@ -41,6 +41,10 @@ namespace gearfem::contact
       throw InputError("Contact/Max geometry iterations", std::to_string(max_geometry_iterations), ">= 1");
     if (max_load_cuts < 0)
       throw InputError("Contact/Max load cuts", std::to_string(max_load_cuts), ">= 0");
+    if (!(friction >= 0.0 && friction <= 1.0))
+      throw InputError("Contact/Friction coefficient", to_string_g(friction), "[0, 1]");
+    if (!(friction_tolerance > 0.0 && friction_tolerance <= 0.1))
+      throw InputError("Contact/Friction sliding tolerance", to_string_g(friction_tolerance), "(0, 0.1]");
     if (slave != 1 && slave != 2)
       throw InputError("Contact/Slave body", std::to_string(slave), "1 | 2");
   }

@@ -58,6 +58,14 @@ namespace gearfem::contact
     /// applied as an initial normal separation on the unmodified mesh (true; designs that
     /// differ only in micro-geometry then share one mesh and factorisation).
     bool micro_geometry_as_gap = false;
+    /// Coulomb friction coefficient mu in [0, 1] (docs/friction.md). At each contact point the
+    /// tangential force is mu lambda against the rigid-body sliding velocity of the slave
+    /// relative to the master (TwoBodyContact::set_kinematics); 0: frictionless.
+    double friction = 0.0;
+    /// Regularisation of the sliding direction: where |v_s| is below this fraction of the
+    /// kinematics' reference speed (the pitch-line speed of a gear pair), the tangential
+    /// force is mu lambda v_s / v_tol instead of mu lambda sign(v_s). In (0, 0.1].
+    double friction_tolerance = 1e-4;
     /// Throws InputError naming the `Contact` entry.
     void validate() const;
   };

@@ -3,6 +3,7 @@
 
 #include "base/errors.h"
 #include "base/number.h"
+#include "base/units.h"
 #include "params/checked.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -60,8 +61,31 @@ namespace gearfem::contact
                       "that differ only in micro-geometry then share one mesh and factorisation "
                       "(docs/contact.md). Units: none.");
     prm.declare_entry("Friction coefficient", "0", Double(),
-                      "Coulomb friction. Only frictionless contact (0) is implemented. Units: none. "
-                      "Allowed: 0.");
+                      "Coulomb friction coefficient mu of Friction law = constant: the tangential force "
+                      "mu lambda at each contact point opposes the rigid-body sliding of the flanks "
+                      "(docs/friction.md). 0: frictionless. Units: none. Allowed: [0, 1].");
+    prm.declare_entry("Friction sliding tolerance", "1e-4", Double(),
+                      "Below this sliding speed, as a fraction of the pitch-line speed, the friction "
+                      "force ramps linearly through zero instead of reversing (near the pitch point; "
+                      "docs/friction.md measures its effect). Units: none. Allowed: (0, 0.1].");
+    prm.declare_entry("Friction law", "constant", Selection("constant|ISO/TR 14179-2|AGMA 925"),
+                      "The mean friction coefficient of the mesh. constant: Friction coefficient. "
+                      "ISO/TR 14179-2: Schlenk's law of ISO/TR 14179-2:2001 from the load per face width, "
+                      "the sum velocity and radius of curvature at the pitch point, Oil viscosity and the "
+                      "roughness (evaluated per torque). AGMA 925: 0.06 C_R of AGMA 925-A03 from the "
+                      "roughness (the gearbox's scuffing coefficient). Units: none.");
+    prm.declare_entry("Pinion speed", "1000", Double(),
+                      "Pinion speed for the mesh power loss and the speeds of the friction law. "
+                      "Units: rpm. Allowed: > 0.");
+    prm.declare_entry("Oil viscosity", "0", Double(),
+                      "Dynamic viscosity of the oil at its operating temperature (ISO/TR 14179-2; 0: not "
+                      "given). Units: mPa s. Allowed: [0.1, 1e5] when the law needs it.");
+    prm.declare_entry("Roughness gear 1", "0", Double(),
+                      "Arithmetic mean roughness Ra of the pinion flanks (0: not given). Units: um.");
+    prm.declare_entry("Roughness gear 2", "0", Double(),
+                      "Arithmetic mean roughness Ra of the gear flanks (0: not given). Units: um.");
+    prm.declare_entry("Lubricant factor", "1", Double(),
+                      "X_L of ISO/TR 14179-2 (1 for mineral oil). Units: none.");
     prm.leave_subsection();
   }
 
@@ -81,11 +105,9 @@ namespace gearfem::contact
     o.per_zone_slaves           = prm.get("Slave selection") == "per zone";
     o.gap                       = gap_rule_from_string(prm.get("Gap"));
     o.micro_geometry_as_gap     = prm.get("Micro-geometry") == "gap";
-    const double mu = params::get_double(prm, "Friction coefficient");
+    o.friction                  = params::get_double(prm, "Friction coefficient");
+    o.friction_tolerance        = params::get_double(prm, "Friction sliding tolerance");
     prm.leave_subsection();
-    if (mu != 0.0)
-      throw InputError("Contact/Friction coefficient", to_string_g(mu), "0 (frictionless only)",
-                       "friction is not implemented in this version");
     o.validate();
     return o;
   }

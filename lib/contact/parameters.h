@@ -14,4 +14,5 @@ namespace gearfem::contact
   /// Read and validate `Contact` (InputError). `E1`, `E2` resolve `Slave body = auto` (the
   /// softer body; the pinion when equal).
   ContactOptions parse_contact_parameters(dealii::ParameterHandler &prm, double E1, double E2);
+
 } // namespace gearfem::contact

@@ -198,7 +198,7 @@ namespace gearfem::contact
         t0 = Clock::now();
         const Linearisation lin = linearise(scene, sr, q, lambda_node, out.t_compliance);
         NcpResult ncp = solve_ncp(lin.W, lin.D, lin.a, lin.ghat, control, value, q, lin.lambda0,
-                                  options_.max_active_set_iterations);
+                                  options_.max_active_set_iterations, lin.af);
         out.active_set_iterations += ncp.iterations;
         out.t_solve += since(t0) - lin.t_flex; // flexibility columns are not contact solve time
         if (!ncp.ok)
@@ -217,7 +217,7 @@ namespace gearfem::contact
             c.u.setZero();
             for (int k = 0; k < m; ++k)
               if (ncp.lambda[k] != 0)
-                for (const auto &[i, v] : lin.B[b][k])
+                for (const auto &[i, v] : lin.forces(b)[k])
                   c.u += (ncp.lambda[k] * v) * c.flex->C.col(i);
           }
         std::vector<int> active;
@@ -262,7 +262,7 @@ namespace gearfem::contact
 
         out.converged           = true;
         out.q                   = q;
-        out.load                = -lin.a.dot(ncp.lambda);
+        out.load                = -lin.load_arm().dot(ncp.lambda);
         out.tangent             = ncp.tangent;
         out.complementarity     = ncp.complementarity;
         out.n_active            = int(active.size());

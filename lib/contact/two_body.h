@@ -1,5 +1,6 @@
 #pragma once
-// Frictionless contact between two linear-elastic bodies, each with its own factorised
+// Contact (frictionless, or with Coulomb friction along a kinematic sliding direction)
+// between two linear-elastic bodies, each with its own factorised
 // body-frame stiffness (fem::ElasticBody, clamped bore or edges). Body 2 is fixed; body 1
 // moves rigidly by one drive coordinate q (a rotation about its centre [rad] or a
 // translation along a direction [m]) applied kinematically: the rigid placement is exact
@@ -32,6 +33,13 @@
 //  - penalty: lambda_s = eps_s <-g_s>, eps_s = factor * E * b * w_s / h_s (E/h scaling);
 //    Newton with the consistent tangent (W + eps^-1) on the current active set, which is
 //    rebuilt whenever the set of penetrating nodes changes.
+// Friction (ContactOptions::friction = mu > 0; docs/friction.md): the sliding direction at
+// each gap point is that of the rigid-body velocities of the two bodies at unit drive rate
+// (set_kinematics), known before the solve, so the tangential force mu lambda s, s = -sign
+// of the slave's sliding velocity along t = (-n_y, n_x) (regularised below
+// friction_tolerance), never changes sign between iterations. The force directions become
+// B_f = B + mu B_t S and g = g_hat + a q + W_f lambda with W_f = B^T C B_f (non-symmetric);
+// the load is T = -a_f^T lambda with a_f the virtual work of B_f on the drive.
 // Load control (target generalised force T = -a^T lambda) adds q as an unknown to the same
 // Newton system (bordered), so torque targeting is a Newton iteration with the consistent
 // tangent dT/dq = a_A^T (W_AA + D)^-1 a_A, warm-started from the previous position.
@@ -82,6 +90,16 @@ namespace gearfem::contact
     double pressure = 0;   ///< recovered contact pressure [Pa] (ContactSurface::recover_pressure)
     double weight = 0;     ///< consistent nodal weight w [m]
     double arm = 0;        ///< a_s = dg/dq [m/rad or -]
+    /// Friction force on the slave along t = (-n_y, n_x) [N] (0 when frictionless).
+    double friction = 0;
+    /// Rigid-body sliding velocity of the slave relative to the master along t, per unit
+    /// drive rate [m/rad or -] (0 without kinematics).
+    double sliding = 0;
+    /// Rigid-body velocity of the slave relative to the master along the normal n, per unit
+    /// drive rate, weighted like the gap [m/rad or -]: 0 at conjugate contact (involute
+    /// flanks on the line of action), not at a tip corner or off the line of action; the
+    /// normal force then does work, lambda * approach.
+    double approach = 0;
   };
 
   struct ContactSolution
@@ -124,6 +142,15 @@ namespace gearfem::contact
 
   struct CondensedPosition; // contact/condensed.h
 
+  /// Rigid-body kinematics of the pair per unit drive rate, for the sliding direction of
+  /// friction: body 1 moves with the drive (rotation about its placement centre, or the
+  /// translation), body 2 turns about its placement centre at `omega2` per unit drive rate.
+  struct SlidingKinematics
+  {
+    double omega2 = 0.0;         ///< [rad per unit q]; gear pair: -z1/z2 (external)
+    double reference_speed = 1.0; ///< speed that scales the sliding tolerance [m per unit q]
+  };
+
   class TwoBodyContact
   {
   public:
@@ -145,6 +172,11 @@ namespace gearfem::contact
     /// Add `f` (material removed, >= 0 where the surface is relieved) of body `body` to every
     /// gap measured at its points, as slave point or as master projection. Null: none.
     void set_gap_modification(int body, GapModification f);
+    /// The rigid-body kinematics that set the sliding direction of friction.
+    void set_kinematics(const SlidingKinematics &k) { kinematics_ = k; }
+    const SlidingKinematics &kinematics() const { return kinematics_; }
+    /// Change the Coulomb coefficient (e.g. a load-dependent law per torque level); [0, 1].
+    void set_friction(double mu);
 
     /// The universe of body `body`: its contact-surface DoFs (universe index -> global DoF),
     /// on which the flexibility is cached.
@@ -214,6 +246,14 @@ namespace gearfem::contact
       std::vector<std::vector<std::pair<int, double>>> B[2]; ///< per body, per candidate: (universe index, value)
       Eigen::VectorXd a, ghat, D, lambda0;
       Eigen::MatrixXd W;
+      /// With friction: the force directions B_f per body and candidate (B without), the
+      /// load arm a_f (a without), and per candidate the friction factor s (tangential force
+      /// mu lambda s along t) and the sliding velocity at its own projection [m per unit q].
+      std::vector<std::vector<std::pair<int, double>>> F[2];
+      Eigen::VectorXd af, slip, sliding;
+      Eigen::VectorXd approach; ///< per candidate: n . (v_S - v_M), weighted like the gap
+      const std::vector<std::vector<std::pair<int, double>>> &forces(int b) const { return F[b].empty() ? B[b] : F[b]; }
+      const Eigen::VectorXd &load_arm() const { return af.size() ? af : a; }
       double t_flex = 0; ///< flexibility columns computed for it [s]
     };
     struct Flexibility
@@ -267,11 +307,17 @@ namespace gearfem::contact
     void ensure_columns(int body, const std::vector<int> &universe_indices, double &seconds);
     Vec2 displacement(int body, int node) const;
     Vec2 interpolate(int body, int face, const std::vector<double> &shape) const;
+    /// Rigid-body velocity of body `body` at pair-frame point x per unit drive rate.
+    Vec2 rigid_velocity(const Scene &scene, int body, const Vec2 &x) const;
+    /// Sliding velocity along t = (-n_y, n_x) of the slave point xs of body S relative to
+    /// the master point xm in contact with it (pair frame), per unit drive rate.
+    double sliding_velocity(const Scene &scene, int S, const Vec2 &xs, const Vec2 &xm, const Vec2 &n) const;
 
     const ContactSurface *s1_, *s2_;
     ContactOptions options_;
     Drive drive_;
     GapModification gap_mod_[2];
+    SlidingKinematics kinematics_;
     BodyCache cache_[2];
     /// The last projection of each slave point (node or face sample) onto its master, the
     /// start of the next one within one configuration (cleared by solve(); search is const:

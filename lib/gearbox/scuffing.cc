@@ -1,4 +1,5 @@
 #include "gearbox/scuffing.h"
+#include "analytical/friction.h"
 #include "base/units.h"
 
 #include "base/errors.h"
@@ -12,7 +13,6 @@ namespace gearfem::gearbox::scuffing
   {
     using units::pi;
     constexpr double blok_K = 0.80;       ///< Blok's constant for a Hertzian band (AGMA 925)
-    constexpr double mu_base = 0.06;      ///< mu_m = 0.06 C_R (Siasos 2010 eq. 4.4-53)
     double lg(double x) { return std::log10(x); }
   } // namespace
 
@@ -91,9 +91,7 @@ namespace gearfem::gearbox::scuffing
     require_greater("scuffing: load", F, 0.0, "N");
     Result r;
     r.E_r = 2.0 / ((1 - c.nu1 * c.nu1) / c.E1 + (1 - c.nu2 * c.nu2) / c.E2); // eq. 4.4-36
-    const double Ravg = 0.5 * (c.Ra1 + c.Ra2) * 1e6;                         // um
-    const double C_R = std::clamp(1.13 / (1.13 - Ravg), 1.0, 3.0);          // eqs. 4.4-53/54
-    r.mu_m = mu_base * C_R;
+    r.mu_m = analytical::friction::agma_925(c.Ra1, c.Ra2); // eqs. 4.4-53/54, the one definition
     r.w_n = F / std::cos(l.phi_r) / b; // eqs. 4.4-31/32, L_min = b for spur gears
     const double rb1 = l.Rb1 * m, C6 = l.C6 * m;
     const double A = l.C1 * m, Bp = l.C2 * m, D = l.C4 * m, E = l.C5 * m;

@@ -30,14 +30,14 @@ namespace gearfem::io
       {"p_max", "MPa"}, {"p_max edge", "MPa"}, {"root stress pinion", "MPa"},
       {"root stress gear", "MPa"}, {"active nodes", "-"}, {"geometry iterations", "-"},
       {"active-set iterations", "-"}, {"load cuts", "-"}, {"complementarity", "-"},
-      {"max penetration", "um"}, {"time", "s"}};
+      {"max penetration", "um"}, {"friction force", "N"}, {"power loss", "W"}, {"normal-force power", "W"}, {"time", "s"}};
     const Columns pair_columns = {
       {"torque", "N m"}, {"position", "-"}, {"roll angle", "deg"}, {"pinion tooth", "-"},
       {"gear tooth", "-"}, {"F_n", "N"}, {"load share", "-"}, {"active nodes", "-"},
       {"p_max", "MPa"}, {"p_Hertz", "MPa"}, {"half width", "mm"}, {"a_Hertz", "mm"},
       {"resolved", "-"}, {"edge contact", "-"}, {"slave body", "-"}, {"radius pinion", "mm"},
       {"root stress pinion", "MPa"}, {"root radius pinion", "mm"}, {"root stress gear", "MPa"},
-      {"root radius gear", "mm"}};
+      {"root radius gear", "mm"}, {"friction force", "N"}, {"power loss", "W"}};
     const Columns pressure_columns = {{"torque", "N m"}, {"position", "-"}, {"roll angle", "deg"},
                                       {"pinion tooth", "-"}, {"s", "mm"}, {"radius", "mm"},
                                       {"p", "MPa"}};

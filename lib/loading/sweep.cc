@@ -91,6 +91,8 @@ namespace gearfem::loading
         p.phi1   = plan.positions[p.position_index].second;
         if (p.position_index == 0)
           have_prev = false; // each torque starts cold, from the first position
+        if (!plan.friction.empty())
+          model.contact_solver().set_friction(plan.friction.at(p.torque_index));
         contact::ContactState s;
         try
           {

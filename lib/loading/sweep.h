@@ -20,6 +20,8 @@ namespace gearfem::loading
   {
     std::vector<std::pair<std::string, double>> positions; ///< (name or "", pinion roll phi1 [rad])
     std::vector<double> torques;                           ///< pinion torques T1 [N m]
+    /// Friction coefficient per torque (a load-dependent law); empty: the model's own.
+    std::vector<double> friction;
     std::size_t size() const { return positions.size() * torques.size(); }
   };
 

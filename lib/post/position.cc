@@ -106,6 +106,14 @@ namespace gearfem::post
           tp.slave_body   = p.slave_body;
           tp.force += p.force;
           total += p.force;
+          if (p.friction != 0)
+            {
+              // On the pinion along t = (-n_y, n_x), then towards its tip.
+              const Vec2 t(-p.normal.y(), p.normal.x());
+              const double on_pinion = p.slave_body == 1 ? p.friction : -p.friction;
+              tp.friction += t.dot(p.x - P[0].centre) > 0 ? on_pinion : -on_pinion;
+              tp.power_loss += std::abs(p.friction * p.sliding);
+            }
           ++tp.active_nodes;
           tp.edge = tp.edge || at_tip_edge(pair, p, P, band);
         }
@@ -154,6 +162,13 @@ namespace gearfem::post
     r.normal_force = sol.load / rb1;
     r.k_secant     = r.ste > 0 ? r.normal_force / r.ste : 0.0;
     r.k_tangent    = sol.tangent / (rb1 * rb1);
+    for (const auto &p : sol.points)
+      {
+        r.friction_force += std::abs(p.friction);
+        // T1 w1 - T2 w2 = -sum F_1 . (v_1 - v_2) = -sum lambda (n + mu s t) . (v_S - v_M) for
+        // either slave body: the friction term is the loss, the normal term this.
+        r.normal_power -= options.pinion_speed * p.force * p.approach;
+      }
 
     // Load sharing, pressure and root stress by tooth pair.
     auto pairs = load_sharing(pair, sol, P, options.tip_edge_band);
@@ -164,6 +179,8 @@ namespace gearfem::post
           root_stress(tp);
         r.max_root_stress_pinion = std::max(r.max_root_stress_pinion, tp.root_stress_pinion);
         r.max_root_stress_gear   = std::max(r.max_root_stress_gear, tp.root_stress_gear);
+        tp.power_loss *= options.pinion_speed;
+        r.power_loss += tp.power_loss;
         (tp.edge ? r.p_max_edge : r.p_max) = std::max(tp.edge ? r.p_max_edge : r.p_max, tp.p_max);
       }
     for (auto &[k, tp] : pairs)

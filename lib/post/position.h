@@ -35,6 +35,8 @@ namespace gearfem::post
     /// circle of its gear counts as touching the tip edge (edge contact), in units of the
     /// module m_n of the pinion [-], >= 0. The default only absorbs round-off.
     double tip_edge_band = 1e-9;
+    /// Pinion speed [rad/s] of the mesh power loss (the `Contact/Pinion speed` of the run).
+    double pinion_speed = 1000.0 * 3.14159265358979323846 / 30.0;
   };
 
   /// Throws InputError naming the `Post` entry ("Post/Min patch nodes", ...) of the first
@@ -62,6 +64,10 @@ namespace gearfem::post
     int slave_body = 1;       ///< body that carried the slave nodes of this pair
     double root_stress_pinion = 0, root_stress_gear = 0; ///< peak fillet sigma_1 [Pa]
     double root_radius_pinion = 0, root_radius_gear = 0; ///< where [m]
+    /// Friction force of the pair on the pinion flank along its profile, positive towards
+    /// the pinion tip [N]; it reverses at the pitch point (0 when frictionless).
+    double friction = 0;
+    double power_loss = 0;    ///< sum of |friction force| |sliding speed| of the pair [W]
     std::vector<std::array<double, 3>> profile; ///< (s [m] along the pinion flank from the peak, radius [m], p [Pa])
   };
 
@@ -83,6 +89,12 @@ namespace gearfem::post
     double p_max_edge = 0;      ///< peak pressure over the edge/corner pairs [Pa] (mesh-dependent)
     std::vector<ToothPairResult> pairs;
     double max_root_stress_pinion = 0, max_root_stress_gear = 0; ///< [Pa]
+    double friction_force = 0;  ///< sum of |friction force| over the contact points [N]
+    double power_loss = 0;      ///< mesh power loss sum mu lambda |v_s| at PostOptions::pinion_speed [W]
+    /// Power of the normal contact forces at non-conjugate contact, sum lambda n . (v_1 - v_2)
+    /// at PostOptions::pinion_speed [W] (tip-corner contact, contact off the line of action):
+    /// T1 omega1 - T2 omega2 = power_loss + normal_power; its mean over a mesh cycle is 0.
+    double normal_power = 0;
     double t_post = 0;           ///< wall time of the evaluation [s] (set by Evaluator)
     dealii::Vector<double> u[2]; ///< body-frame displacements (kept only when asked)
   };

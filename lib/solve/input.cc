@@ -131,6 +131,24 @@ namespace gearfem::solve
     for (const double T : torques)
       geometry::limits::check_small_strain("Solve/Torques", T, pair.base_radius(1), b, Es, curvature);
   }
+
+  /// The friction-law entries of `Contact` (declared with the section in contact/parameters.h),
+  /// checked: InputError naming the entry the chosen law needs.
+  analytical::friction::LawInputs parse_friction_law(dealii::ParameterHandler &prm)
+  {
+    analytical::friction::LawInputs f;
+    prm.enter_subsection("Contact");
+    f.law          = analytical::friction::law_from_string(prm.get("Friction law"));
+    f.mu           = params::get_double(prm, "Friction coefficient");
+    f.pinion_speed = params::get_double(prm, "Pinion speed") * units::pi / 30.0;
+    f.eta_oil      = params::get_double(prm, "Oil viscosity") * 1e-3;
+    f.Ra1          = params::get_double(prm, "Roughness gear 1") * 1e-6;
+    f.Ra2          = params::get_double(prm, "Roughness gear 2") * 1e-6;
+    f.X_L          = params::get_double(prm, "Lubricant factor");
+    prm.leave_subsection();
+    analytical::friction::check(f);
+    return f;
+  }
   } // namespace
 
   void declare_gear_contact_input(dealii::ParameterHandler &prm)
@@ -159,6 +177,7 @@ namespace gearfem::solve
       }
     in.fe      = fem::parse_fe_parameters(prm);
     in.contact = contact::parse_contact_parameters(prm, in.material[0].youngs_modulus, in.material[1].youngs_modulus);
+    in.friction = parse_friction_law(prm);
     using Relief = geometry::TipRelief::Kind;
     if (in.contact.micro_geometry_as_gap && (gi.gear1.relief.kind != Relief::none || gi.gear2.relief.kind != Relief::none))
       {
@@ -169,6 +188,7 @@ namespace gearfem::solve
     in.solve   = parse_solve_parameters(prm);
     (void)in.positions(); // checks the position list
     check_small_strain(*in.pair, pm, in.solve.torques);
+    in.contact.friction = in.friction_coefficients(in.solve.torques).front();
     return in;
   }
 
@@ -261,6 +281,21 @@ namespace gearfem::solve
       << c.tolerance << ' ' << c.max_active_set_iterations << ' ' << c.max_geometry_iterations << ' '
       << c.max_load_cuts << ' ' << c.slave << ' ' << c.per_zone_slaves << ' ' << static_cast<int>(c.gap) << ' '
       << (c.micro_geometry_as_gap || gap_route) << '\n';
+    // Friction enters the key only when present, so that frictionless keys are unchanged.
+    const auto &f = in.friction;
+    if (c.friction > 0 || f.law != analytical::friction::Law::constant)
+      s << "friction " << c.friction << ' ' << c.friction_tolerance << ' ' << static_cast<int>(f.law) << ' ' << f.mu
+        << ' ' << f.pinion_speed << ' ' << f.eta_oil << ' ' << f.Ra1 << ' ' << f.Ra2 << ' ' << f.X_L << '\n';
     return io::content_hash(s.str());
+  }
+
+  std::vector<double> GearContactInput::friction_coefficients(const std::vector<double> &torques) const
+  {
+    const double b = std::min(material[0].thickness, material[1].thickness);
+    std::vector<double> mu;
+    for (const double T : torques)
+      mu.push_back(analytical::friction::coefficient(
+        friction, analytical::friction::pitch_point(*pair, T, friction.pinion_speed, b)));
+    return mu;
   }
 } // namespace gearfem::solve

@@ -3,6 +3,7 @@
 // torques, outputs) and GearContactInput, which gathers the geometry, material, mesh,
 // finite-element and contact sections and builds the model. Engineering units at the
 // interface (deg, N m), SI in the structs.
+#include "analytical/friction.h"
 #include "contact/gear_contact.h"
 #include "contact/two_body.h"
 #include "fem/elastic_body.h"
@@ -64,7 +65,12 @@ namespace gearfem::solve
     fem::Elasticity material[2];
     fem::FeOptions fe;
     contact::ContactOptions contact;
+    /// The friction law and its operating inputs (Contact section); contact.friction holds
+    /// the coefficient at the first torque.
+    analytical::friction::LawInputs friction;
     SolveParameters solve;
+    /// The friction coefficient at each pinion torque [N m] (the law at the pitch point).
+    std::vector<double> friction_coefficients(const std::vector<double> &torques) const;
     /// The positions of the `Solve` section: (name, roll angle [rad]).
     std::vector<std::pair<std::string, double>> positions() const;
     std::unique_ptr<contact::GearContactModel> model() const;

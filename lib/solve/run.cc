@@ -225,14 +225,16 @@ namespace gearfem::solve
                      r.torque_gear / (r.torque * z_ratio), r.p_max / 1e6, r.p_max_edge / 1e6,
                      r.max_root_stress_pinion / 1e6, r.max_root_stress_gear / 1e6, double(s.n_active),
                      double(s.geometry_iterations), double(s.active_set_iterations), double(s.load_cuts),
-                     s.complementarity, s.max_penetration * 1e6, state.t_contact + r.t_post});
+                     s.complementarity, s.max_penetration * 1e6, r.friction_force, r.power_loss,
+                     r.normal_power, state.t_contact + r.t_post});
     for (const auto &p : r.pairs)
       {
         t.pairs.add_row({r.torque, double(index), r.phi1 * deg, double(p.pinion_tooth), double(p.gear_tooth),
                          p.force, p.share, double(p.active_nodes), p.p_max / 1e6, p.p_hertz / 1e6,
                          p.half_width * 1e3, p.a_hertz * 1e3, double(p.resolved), double(p.edge),
                          double(p.slave_body), p.radius_pinion * 1e3, p.root_stress_pinion / 1e6,
-                         p.root_radius_pinion * 1e3, p.root_stress_gear / 1e6, p.root_radius_gear * 1e3});
+                         p.root_radius_pinion * 1e3, p.root_stress_gear / 1e6, p.root_radius_gear * 1e3,
+                         p.friction, p.power_loss});
         for (const auto &q : p.profile)
           t.pressure.add_row({r.torque, double(index), r.phi1 * deg, double(p.pinion_tooth), q[0] * 1e3,
                               q[1] * 1e3, q[2] / 1e6});
@@ -267,6 +269,8 @@ namespace gearfem::solve
                            const SolveRunOptions &options)
   {
     validate(options.post);
+    post::PostOptions post_options = options.post;
+    post_options.pinion_speed      = in.friction.pinion_speed;
     // Root stresses and reactions from influence coefficients (fields only for VTU).
     model.observe_root_stress();
     const double contact_before = contact::section_seconds(model.timer(), "contact");
@@ -274,10 +278,20 @@ namespace gearfem::solve
     loading::SweepPlan plan;
     plan.positions = in.positions();
     plan.torques   = in.solve.torques;
+    plan.friction  = in.friction_coefficients(plan.torques);
 
     SolveRunResult run;
     io::SolveResults &t = run.results;
     t                   = start_results(in, options.input_name);
+    if (in.contact.friction > 0 || in.friction.law != analytical::friction::Law::constant)
+      {
+        std::ostringstream mu;
+        for (std::size_t i = 0; i < plan.friction.size(); ++i)
+          mu << (i ? ", " : "") << to_string_g(plan.friction[i]);
+        t.attributes["friction_law"]          = analytical::friction::to_string(in.friction.law);
+        t.attributes["friction_coefficients"] = mu.str(); // per torque, in the order of Solve/Torques
+        run.friction = plan.friction;
+      }
 
     const double z_ratio    = double(pair.gear(2).teeth()) / pair.gear(1).teeth();
     const double face_width = std::min(in.material[0].thickness, in.material[1].thickness);
@@ -302,10 +316,11 @@ namespace gearfem::solve
 
     JournalObserver journal_observer(journal, tables, vtu);
     ProgressObserver progress(options.out, plan.size(), start.next);
-    Evaluator evaluator(model, options.post);
+    Evaluator evaluator(model, post_options);
     EvaluatingObserver evaluate(evaluator, {&tables, &vtu, &journal_observer, &progress});
     const auto outcome = loading::run_sweep(model, plan, {&evaluate}, start);
     run.solved     = outcome.finished;
+    run.pinion_speed = in.friction.pinion_speed;
     run.failure    = outcome.failure;
     run.unresolved = count_unresolved(t, options.post.unresolved_share);
 
@@ -325,6 +340,41 @@ namespace gearfem::solve
                    {"post", contact::section_seconds(evaluator.timer(), "post")},
                    {"output", contact::section_seconds(evaluator.timer(), "output")}};
     return run;
+  }
+
+  std::string friction_table(const SolveRunResult &run, const geometry::GearPair &pair,
+                             const std::vector<double> &torques)
+  {
+    const auto &sw   = run.results.sweep;
+    const auto T_col = sw.column("torque"), loss = sw.column("power loss"), ratio = sw.column("T2 z1/(T1 z2)"),
+               T1 = sw.column("T1 contact moment"), fr = sw.column("friction force");
+    double any = 0;
+    for (const double v : loss)
+      any = std::max(any, v);
+    if (!(any > 0))
+      return "";
+    std::ostringstream out;
+    out << "\n| T1 [N m] | mu [-] | mean friction force [N] | mean mesh power loss [W] | efficiency from the loss | "
+           "efficiency from the torques | mu* [-]: P_loss = P_in mu* H_V (Ohlendorf) |\n|---|---|---|---|---|---|---|\n";
+    const double hv = analytical::friction::ohlendorf_hv(pair);
+    for (std::size_t ti = 0; ti < torques.size(); ++ti)
+      {
+        const double T = torques[ti];
+        // Cycle means: P_in = T1 w1, P_out = T2 w2 = ratio T1 w1 (the ratio column is T2 z1/(T1 z2)).
+        double p_loss = 0, p_in = 0, p_out = 0, f = 0;
+        int n = 0;
+        for (std::size_t i = 0; i < T_col.size(); ++i)
+          if (T_col[i] == T)
+            p_loss += loss[i], p_in += T1[i], p_out += ratio[i] * T1[i], f += fr[i], ++n;
+        if (n == 0 || !(p_in > 0))
+          continue;
+        const double w1 = run.pinion_speed;
+        const double eta_loss = 1.0 - p_loss / (p_in * w1), eta_torque = p_out / p_in;
+        out << std::setprecision(5) << "| " << T << " | " << (ti < run.friction.size() ? run.friction[ti] : 0.0)
+            << " | " << f / n << " | " << p_loss / n << " | " << eta_loss << " | "
+            << eta_torque << " | " << (1.0 - eta_loss) / hv << " |\n";
+      }
+    return out.str();
   }
 
   std::string summary_table(const SolveRunResult &run, const geometry::GearPair &pair,
@@ -371,6 +421,7 @@ namespace gearfem::solve
             << c_gamma << " | " << (c_gamma > 0 ? ks / n / c_gamma : 0.0) << " | " << pm << " | " << s1 << " / "
             << s2 << " | " << (u == run.unresolved.end() ? 0 : u->second) << " |\n";
       }
+    out << friction_table(run, pair, torques);
     return out.str();
   }
 } // namespace gearfem::solve

@@ -46,6 +46,8 @@ namespace gearfem::solve
     /// Wall time [s] of the phases of this call: "contact" (the solves), "post" (the
     /// evaluation), "output" (tables, VTU, journal, results files).
     std::map<std::string, double> seconds;
+    double pinion_speed = 0;          ///< of the power loss [rad/s] (Contact/Pinion speed)
+    std::vector<double> friction;     ///< the friction coefficient per torque (empty: frictionless)
   };
 
   /// The rows of one evaluated position (index = position index in the plan, name = its
@@ -69,4 +71,10 @@ namespace gearfem::solve
   /// 6336-1 c_gamma_alpha, peak pressure and root stresses, unresolved pair-positions.
   std::string summary_table(const SolveRunResult &run, const geometry::GearPair &pair,
                             const std::vector<double> &torques);
+  /// With friction: per torque, the mean friction force and mesh power loss over the
+  /// positions, the mesh efficiency from the loss (1 - P_loss/P_in) and from the torques
+  /// (T2 w2 / T1 w1), and the coefficient mu* with P_loss = P_in mu* H_V (Ohlendorf's H_V:
+  /// mu* equals mu where the idealised load sharing holds). Empty when frictionless.
+  std::string friction_table(const SolveRunResult &run, const geometry::GearPair &pair,
+                             const std::vector<double> &torques);
 } // namespace gearfem::solve
