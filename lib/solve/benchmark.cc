@@ -11,6 +11,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace gearfem::solve
 {
@@ -31,11 +34,50 @@ namespace gearfem::solve
         ts += s.solution.t_search, tc += s.solution.t_compliance, tl += s.solution.t_solve;
         tp += r.t_post, tt += s.t_contact + r.t_post;
         git += s.solution.geometry_iterations, ait += s.solution.active_set_iterations;
-        ste += r.ste;
+        ste += r.ste, loss += r.power_loss;
       }
-      double ts = 0, tc = 0, tl = 0, tp = 0, tt = 0, ste = 0;
+      double ts = 0, tc = 0, tl = 0, tp = 0, tt = 0, ste = 0, loss = 0;
       long git = 0, ait = 0;
     };
+    /// One sweep of `plan` on `model` at friction coefficient mu: per-position contact +
+    /// post time [s], its totals.
+    Totals timed_sweep(contact::GearContactModel &model, const loading::SweepPlan &plan, const PostOptions &post,
+                       double mu)
+    {
+      model.contact_solver().set_friction(mu);
+      Evaluator evaluator(model, post);
+      Totals sum;
+      EvaluatingObserver evaluate(evaluator, {&sum});
+      const auto outcome = loading::run_sweep(model, plan, {&evaluate});
+      if (!outcome.failure.empty())
+        throw SolverError(outcome.failure);
+      return sum;
+    }
+
+    /// The cost of friction on a model whose flexibility columns are cached: frictionless and
+    /// frictional sweeps alternated twice, the faster of each kept (shared machines).
+    std::string friction_cost(contact::GearContactModel &model, const loading::SweepPlan &plan,
+                              const PostOptions &post, double mu)
+    {
+      Totals best0, best1;
+      best0.tt = best1.tt = 1e300;
+      for (int rep = 0; rep < 2; ++rep)
+        {
+          const Totals a = timed_sweep(model, plan, post, 0.0);
+          const Totals b = timed_sweep(model, plan, post, mu);
+          if (a.tt < best0.tt)
+            best0 = a;
+          if (b.tt < best1.tt)
+            best1 = b;
+        }
+      model.contact_solver().set_friction(0.0);
+      const double n = double(plan.size());
+      std::ostringstream row;
+      row << std::fixed << std::setprecision(4) << best0.tt / n << " | " << best1.tt / n << " | " << std::setprecision(3)
+          << best1.tt / best0.tt << " | " << std::setprecision(4) << best0.ste / n * 1e6 << " / "
+          << best1.ste / n * 1e6 << " | " << std::setprecision(2) << best1.loss / n << " |\n";
+      return row.str();
+    }
   } // namespace
 
   void benchmark(const std::filesystem::path &prm_file, std::ostream &out)
@@ -47,7 +89,8 @@ namespace gearfem::solve
     post::declare_post_parameters(prm);
     prm.parse_input(prm_file.string(), "", true, true); // other commands' sections are ignored
     solve::GearContactInput in = solve::parse_gear_contact_input(prm);
-    const PostOptions post_options = post::parse_post_parameters(prm);
+    PostOptions post_options = post::parse_post_parameters(prm);
+    post_options.pinion_speed = in.friction.pinion_speed;
     const auto positions = in.positions();
     const double T       = in.solve.torques.front();
     out << "solve benchmark: " << prm_file.filename().string() << ", z " << in.pair->gear(1).teeth() << "/"
@@ -56,6 +99,10 @@ namespace gearfem::solve
         << "| method | DoFs | mesh [s] | set-up [s] | search [s/pos] | flexibility [s/pos] | contact solve "
            "[s/pos] | post [s/pos] | total [s/pos] | sweep [s] | geometry it/pos | active-set it/pos | "
            "mean STE [um] | peak memory [MB] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    // Friction: the input's coefficient, else 0.05.
+    const double mu = in.friction_coefficients({T}).front() > 0 ? in.friction_coefficients({T}).front() : 0.05;
+    in.contact.friction = 0;
+    std::vector<std::string> friction_rows;
     for (const contact::Method m : {contact::Method::lagrange, contact::Method::penalty})
       {
         in.contact.method = m;
@@ -80,7 +127,13 @@ namespace gearfem::solve
             << std::setprecision(2) << sweep << " | " << sum.git / n << " | " << sum.ait / n << " | "
             << std::setprecision(4) << sum.ste / n * 1e6 << " | " << std::setprecision(0) << peak_memory_mb()
             << " |" << std::endl;
+        friction_rows.push_back(friction_cost(*model, plan, post_options, mu));
       }
+    out << std::defaultfloat << "\nfriction (the same model and positions, flexibility cached; mu = " << mu << "):\n\n"
+        << "| method | frictionless [s/pos] | with friction [s/pos] | ratio | mean STE frictionless / with "
+           "friction [um] | mean power loss [W] |\n|---|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < friction_rows.size(); ++i)
+      out << std::setprecision(4) << "| " << (i == 0 ? "lagrange" : "penalty") << " | " << friction_rows[i];
     out << std::defaultfloat
         << "\nflexibility: block solves for the contact DoFs not yet cached (the first positions pay most);"
            "\nset-up: meshing, assembly and factorisation of both gears (once per run).\n"
