@@ -1,22 +1,109 @@
 // `gearfem solve` with manufacturing deviations: parse, build or read the condensed cycle, run the
-// hunting cycle (tolerance::run_hunting), print the summary and plot.
+// hunting cycle (tolerance::run_hunting), print the summary and plot; or, with
+// `Deviations/Model = geometry`, mesh the gears with their teeth turned by the pitch deviations
+// and run the ordinary full-FE sweep (solve::run_solve).
 #include "commands/solve_hunting.h"
 
 #include "base/errors.h"
 #include "base/memory.h"
 #include "condensed/cycle.h"
 #include "condensed/resolve.h"
+#include "io/journal.h"
+#include "solve/run.h"
+#include "tolerance/geometry.h"
 #include "tolerance/hunting.h"
 
 #include <algorithm>
+#include <chrono>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 namespace gearfem::commands
 {
+  namespace
+  {
+    /// `Deviations/Model = geometry`: the full FE with the teeth turned by their cumulative pitch
+    /// deviations in the mesh, over the positions of `Solve`, with the ordinary outputs.
+    void run_geometry_sweep(const solve::GearContactInput &in, const post::PostOptions &post,
+                            const tolerance::DeviationParameters &dev, const RunContext &ctx)
+    {
+      std::ostream &out = *ctx.out;
+      if (!ctx.condensed.empty())
+        throw InputError("--condensed", ctx.condensed.string(), "none with Deviations/Model = geometry",
+                         "the deviations are built into the mesh: the full FE is solved, no condensed cycle");
+      const geometry::GearPair &meshed = in.unmodified_pair ? *in.unmodified_pair : *in.pair;
+      const auto angles                = tolerance::tooth_angles(dev, *in.pair, meshed);
+      out << "deviations: single pitch deviations built into the geometry (teeth turned by F_p,k / r_ref";
+      for (int b = 0; b < 2; ++b)
+        if (!angles[b].empty())
+          {
+            const auto [lo, hi] = std::minmax_element(angles[b].begin(), angles[b].end());
+            out << "; gear " << b + 1 << ": " << std::setprecision(4) << *lo * 1e6 << " .. " << *hi * 1e6 << " urad";
+          }
+      out << "); full FE over " << in.positions().size() << " positions\n";
+      if (ctx.validate_only)
+        return;
+      mesh::GearMeshParameters mp[2] = {in.mesh[0], in.mesh[1]};
+      const auto t0 = std::chrono::steady_clock::now();
+      std::array<contact::GearBody, 2> bodies;
+      for (int b = 0; b < 2; ++b)
+        mp[b].tooth_angles = angles[b];
+      bodies[0] = contact::build_gear_body(meshed, 1, mp[0], in.material[0], in.fe);
+      // Only gears without offsets may share one body (identical_bodies compares the nominal mesh).
+      if (angles[0].empty() && angles[1].empty() && contact::identical_bodies(meshed, mp, in.material))
+        bodies[1] = bodies[0];
+      else
+        bodies[1] = contact::build_gear_body(meshed, 2, mp[1], in.material[1], in.fe);
+      contact::GearContactModel model(*in.pair, std::move(bodies), in.contact);
+      const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double cpu_setup = process_cpu_seconds();
+      out << "model: " << model.n_dofs() << " DoFs (" << model.body(1).n_dofs() << " + " << model.body(2).n_dofs()
+          << "), set-up (mesh, assemble, factorise) " << std::setprecision(3) << setup << " s" << std::endl;
+      for (int i = 1; i <= 2; ++i)
+        if (model.body(i).mesh().subdivided)
+          out << "note: gear " << i << "'s all-quad mesh comes from gmsh's subdivision fallback (Blossom "
+              << "recombination failed): smaller, less regular cells; `gearfem mesh` reports its quality" << std::endl;
+      solve::SolveRunOptions opt;
+      opt.output_dir = ctx.output_dir;
+      opt.input_name = ctx.input_file.filename().string();
+      std::ostringstream content;
+      content << std::ifstream(ctx.input_file).rdbuf();
+      opt.input_hash = io::content_hash(content.str());
+      opt.resume     = ctx.resume;
+      opt.out        = &out;
+      opt.post       = post;
+      const solve::SolveRunResult r = solve::run_solve(model, in, opt);
+      if (in.solve.plots && r.results.sweep.n_rows() > 0)
+        run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
+      if (!r.failure.empty())
+        throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
+                          " completed positions are saved in " + ctx.output_dir.string() +
+                          " (their journal stays: with the input unchanged, --resume retries from the failed position)");
+      out << "\n" << solve::summary_table(r, *in.pair, in.solve.torques) << "time: contact " << r.seconds.at("contact")
+          << " s, post-processing " << r.seconds.at("post") << " s, output " << r.seconds.at("output")
+          << " s (full FE, pitch deviations in the geometry)\n";
+      if (ctx.outcome)
+        {
+          std::ostringstream cost;
+          cost << std::setprecision(6) << "{\"deviations_in_geometry\": true, \"dofs\": " << model.n_dofs()
+               << ", \"setup_seconds\": " << setup << ", \"contact_seconds\": " << r.seconds.at("contact")
+               << ", \"post_seconds\": " << r.seconds.at("post") << ", \"positions\": " << r.results.sweep.n_rows()
+               << ", \"peak_memory_mb\": " << peak_memory_mb() << ", \"cpu_setup_seconds\": " << cpu_setup
+               << ", \"cpu_sweep_seconds\": " << process_cpu_seconds() - cpu_setup << "}";
+          ctx.outcome->record_members.emplace_back("cost", cost.str());
+        }
+    }
+  } // namespace
+
   void run_hunting_cycle(const solve::GearContactInput &in, const post::PostOptions &post,
                          const tolerance::DeviationParameters &dev, const RunContext &ctx)
   {
+    if (dev.model == tolerance::DeviationParameters::Model::geometry)
+      {
+        run_geometry_sweep(in, post, dev, ctx);
+        return;
+      }
     std::ostream &out = *ctx.out;
     tolerance::check_one_pitch_cycle(in);
     const geometry::PairDeviations d = tolerance::resolve_deviations(dev, *in.pair);

@@ -29,6 +29,12 @@ namespace gearfem::condensed
       throw InputError("Contact/Micro-geometry", "geometry", "gap",
                        "the condensed cycle applies a tip relief as a gap modification on the unmodified "
                        "mesh; a relief meshed as geometry is a different mesh");
+    if (in.contact.friction > 0 || in.friction.law != analytical::friction::Law::constant)
+      throw InputError(in.friction.law == analytical::friction::Law::constant ? "Contact/Friction coefficient"
+                                                                             : "Contact/Friction law",
+                       in.friction.law == analytical::friction::Law::constant ? to_string_g(in.contact.friction)
+                                                                             : analytical::friction::to_string(in.friction.law),
+                       "0 (constant)", "the condensed cycle stores the frictionless operator (docs/friction.md)");
   }
 
   const contact::CondensedPosition &CondensedCycle::at(std::size_t k, double torque) const

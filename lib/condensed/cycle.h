@@ -77,7 +77,8 @@ namespace gearfem::condensed
   std::string condensed_key(const solve::GearContactInput &in);
 
   /// Refuses (InputError naming the entry) an input the condensed route cannot serve: a tip
-  /// relief meshed as geometry (`Contact/Micro-geometry = geometry`).
+  /// relief meshed as geometry (`Contact/Micro-geometry = geometry`), and friction (the
+  /// stored operator is the frictionless one).
   void check_condensable(const solve::GearContactInput &in);
 
   /// Run the FE over the positions of `in` at `build_torque` [N m] (> 0) on `model` (built

@@ -216,7 +216,7 @@ namespace gearfem::geometry
     if (std::abs(sum) > std::max(1e-3 * big, 1e-12))
       throw InputError(section + "/Single pitch deviations", "sum " + to_string_g(sum / um) + " um",
                        "0 (the pitches of a gear close the circle)",
-                       "subtract the mean, or let gearfem draw them (Pitch deviations = random)");
+                       "subtract the mean, or let gearfem draw them (Deviations/Accuracy grade)");
     for (const double f : d.f_Ha)
       if (!std::isfinite(f) || std::abs(f) > 1e-3)
         throw InputError(section + "/Profile slope deviation", to_string_g(f / um) + " um", "|f_Ha| <= 1000 um");

@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace gearfem::mesh
 {
@@ -224,6 +226,70 @@ namespace gearfem::mesh
   }
   } // namespace
 
+  double max_tooth_angle_step(const geometry::ToothProfile &tooth)
+  {
+    const auto &segs = tooth.segments();
+    if (segs.size() < 2 || segs.front().type != geometry::SegmentType::root ||
+        segs.back().type != geometry::SegmentType::root)
+      return 0;
+    double w = std::numeric_limits<double>::infinity();
+    for (const auto *sg : {&segs.front(), &segs.back()})
+      {
+        const Vec2 a = sg->start(), b = sg->end(), c = sg->point(0.5);
+        const double r = a.norm();
+        if (std::abs(b.norm() - r) > 1e-9 * r || std::abs(c.norm() - r) > 1e-9 * r)
+          return 0; // not an arc of a circle about the gear centre
+        w = std::min(w, std::abs(std::remainder(std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x()), 2 * pi)));
+      }
+    return w;
+  }
+
+  void check_tooth_angles(const geometry::ToothProfile &tooth, const std::vector<double> &angles,
+                          const std::string &entry)
+  {
+    if (angles.empty())
+      return;
+    const int z = tooth.teeth();
+    if (int(angles.size()) != z)
+      throw InputError(entry, std::to_string(angles.size()) + " values", std::to_string(z) + " values (one per tooth)");
+    for (int k = 0; k < z; ++k)
+      if (!std::isfinite(angles[std::size_t(k)]))
+        throw InputError(entry, "tooth " + std::to_string(k) + ": " + to_string_g(angles[std::size_t(k)]),
+                         "finite angles [rad]");
+    const double w = max_tooth_angle_step(tooth);
+    for (int k = 0; k < z; ++k)
+      {
+        const double step = angles[std::size_t(k)] - angles[std::size_t(mod(k - 1, z))];
+        if (w == 0 && step != 0)
+          throw InputError(entry, "tooth " + std::to_string(k) + " turned " + to_string_g(step * 1e6) +
+                                    " urad against tooth " + std::to_string(mod(k - 1, z)),
+                           "equal offsets on every tooth",
+                           "the outline has no root land arc: the fillets of neighbouring teeth meet at a "
+                           "point, where turned teeth would overlap or leave a gap");
+        if (std::abs(step) > w)
+          throw InputError(entry, "tooth " + std::to_string(k) + " turned " + to_string_g(step * 1e6) +
+                                    " urad against tooth " + std::to_string(mod(k - 1, z)),
+                           "within +-" + to_string_g(w * 1e6) + " urad (half a root land)",
+                           "neighbouring teeth meet on their root lands, which keep at least half their length");
+      }
+  }
+
+  namespace
+  {
+    /// A half root land of a placed tooth (the first or last piece of its outline, an arc of the
+    /// root circle) as an arc of that circle parametrised by the polar angle, with its free end
+    /// (the start when `first`, else the end) moved by `shift` [rad] along the circle.
+    void root_land_arc(BoundaryPiece &piece, bool first, double shift)
+    {
+      const Vec2 a = piece.start(), b = piece.end();
+      const double ta = std::atan2(a.y(), a.x());
+      const double tb = ta + std::remainder(std::atan2(b.y(), b.x()) - ta, 2 * pi);
+      piece.curve     = ParametricCurve::circle(Vec2(0, 0), a.norm());
+      piece.t0        = first ? ta + shift : ta;
+      piece.t1        = first ? tb : tb + shift;
+    }
+  } // namespace
+
   boundary::Code segment_code(geometry::SegmentType type, geometry::Side side)
   {
     using geometry::SegmentType;
@@ -244,102 +310,12 @@ namespace gearfem::mesh
     return boundary::tip;
   }
 
-  Domain gear_domain(const geometry::ToothProfile &tooth, const GearMeshParameters &p)
+  namespace
   {
-    p.validate();
-    const int z                 = tooth.teeth();
-    const double m              = tooth.parameters().rack.module;
-    const double ri             = inner_radius(p, tooth);
-    const std::vector<int> fine = fine_teeth(p, z);
-    const std::set<int> fine_set(fine.begin(), fine.end());
-    const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
-    check_resolution(p, tooth, ri, h_coarse, int(model_teeth(p, z).size()), int(fine.size()));
-
-    Domain d;
-    d.h_body = p.h_body;
-    d.growth = p.growth;
-    Loop outer;
-    const auto &segs = tooth.segments();
-    // A sharp drive tip corner gets h_corner over the last 2 h_contact of flank and tip land.
-    const double h_corner = corner_size(p, m);
-    const CornerZone corner = h_corner < contact_size(p, m) ?
-                                tip_corner(segs, geometry::Side::drive, 2 * contact_size(p, m)) :
-                                CornerZone();
-    // A sharp coast tip corner where the coast flank is more than 2x coarser than the tip
-    // land: the last 2 h_coast of the coast flank take the geometric mean of the two sizes.
-    // Without it gmsh's Blossom recombination leaves triangle pairs at that corner (Parker
-    // gear, h_contact 0.075 mm, h_coast 0.25 mm) and the mesher falls back to subdivision.
-    const double h_coast_flank = coast_size(p), h_tip_land = contact_size(p, m);
-    const double h_coast_corner = std::sqrt(h_coast_flank * h_tip_land);
-    CornerZone coast_corner;
-    if (h_coast_flank > coast_jump_limit * h_tip_land)
-      {
-        coast_corner            = tip_corner(segs, geometry::Side::coast, 2 * h_coast_flank);
-        coast_corner.segment[1] = -1; // the tip land keeps h_contact
-      }
-    for (const int k : model_teeth(p, z))
-      {
-        const double angle = 2.0 * pi * k / z;
-        const bool is_fine = fine_set.count(mod(k, z)) > 0;
-        for (std::size_t s = 0; s < segs.size(); ++s)
-          {
-            const auto &sg = segs[s];
-            BoundaryPiece piece;
-            piece.curve       = ParametricCurve::from(sg.curve, angle);
-            piece.t0          = sg.t0;
-            piece.t1          = sg.t1;
-            const auto code   = segment_code(sg.type, sg.side);
-            piece.boundary_id = boundary::tooth_id(mod(k, z), code);
-            piece.tooth       = mod(k, z);
-            piece.segment     = int(s);
-            // The fillet of a closed rack's tooth carries contact (geometry::GeneratingRack::closed).
-            const bool contact_fillet = sg.type == geometry::SegmentType::fillet && tooth.rack().closed();
-            const bool flank_like = sg.type == geometry::SegmentType::flank ||
-                                    sg.type == geometry::SegmentType::tip ||
-                                    sg.type == geometry::SegmentType::tip_rounding || contact_fillet;
-            const bool coast = sg.side == geometry::Side::coast &&
-                               (sg.type == geometry::SegmentType::flank ||
-                                sg.type == geometry::SegmentType::tip_rounding || contact_fillet);
-            const double h_flank = coast ? coast_size(p) : contact_size(p, m);
-            piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
-            // Split fine flanks at the requested radii (those inside the piece).
-            std::vector<double> cuts;
-            for (int i = 0; i < 2; ++i)
-              for (const CornerZone *zone : {&corner, static_cast<const CornerZone *>(&coast_corner)})
-                if (is_fine && zone->segment[i] == int(s))
-                  cuts.push_back(zone->t_cut[i]);
-            if (is_fine && sg.type == geometry::SegmentType::flank)
-              for (const double r : p.flank_split_radii)
-                {
-                  const double ra = sg.curve->point(sg.t0).norm(), rb = sg.curve->point(sg.t1).norm();
-                  if (!(r > std::min(ra, rb) + 1e-3 * contact_size(p, m) && r < std::max(ra, rb) - 1e-3 * contact_size(p, m)))
-                    continue;
-                  cuts.push_back(geometry::parameter_at_radius(*sg.curve, sg.t0, sg.t1, r));
-                }
-            std::sort(cuts.begin(), cuts.end(), [&](double x, double y) {
-              return (sg.t1 >= sg.t0) ? x < y : x > y;
-            });
-            double t_prev = sg.t0;
-            for (const double c : cuts)
-              {
-                BoundaryPiece first = piece;
-                first.t0            = t_prev;
-                first.t1            = c;
-                if (is_fine && corner.contains(int(s), 0.5 * (first.t0 + first.t1)))
-                  first.size = h_corner;
-                if (is_fine && coast_corner.contains(int(s), 0.5 * (first.t0 + first.t1)))
-                  first.size = h_coast_corner;
-                outer.pieces.push_back(first);
-                t_prev = c;
-              }
-            piece.t0 = t_prev;
-            if (is_fine && corner.contains(int(s), 0.5 * (piece.t0 + piece.t1)))
-              piece.size = h_corner;
-            if (is_fine && coast_corner.contains(int(s), 0.5 * (piece.t0 + piece.t1)))
-              piece.size = h_coast_corner;
-            outer.pieces.push_back(piece);
-          }
-      }
+  /// The outline `outer` closed into the domain: a full gear's outline with the bore as a hole,
+  /// a sector's with its radial cut edges and the inner arc.
+  void close_domain(Domain &d, Loop outer, const GearMeshParameters &p, double ri)
+  {
     const Vec2 start = outer.pieces.front().start(), end = outer.pieces.back().end();
     if (p.model == GearMeshParameters::Model::full_gear)
       {
@@ -392,6 +368,119 @@ namespace gearfem::mesh
         outer.pieces.push_back(cut_cw);
         d.loops.push_back(outer);
       }
+  }
+  } // namespace
+
+  Domain gear_domain(const geometry::ToothProfile &tooth, const GearMeshParameters &p)
+  {
+    p.validate();
+    const int z                 = tooth.teeth();
+    const double m              = tooth.parameters().rack.module;
+    const double ri             = inner_radius(p, tooth);
+    const std::vector<int> fine = fine_teeth(p, z);
+    const std::set<int> fine_set(fine.begin(), fine.end());
+    const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
+    check_resolution(p, tooth, ri, h_coarse, int(model_teeth(p, z).size()), int(fine.size()));
+
+    Domain d;
+    d.h_body = p.h_body;
+    d.growth = p.growth;
+    Loop outer;
+    const auto &segs = tooth.segments();
+    // A sharp drive tip corner gets h_corner over the last 2 h_contact of flank and tip land.
+    const double h_corner = corner_size(p, m);
+    const CornerZone corner = h_corner < contact_size(p, m) ?
+                                tip_corner(segs, geometry::Side::drive, 2 * contact_size(p, m)) :
+                                CornerZone();
+    // A sharp coast tip corner where the coast flank is more than 2x coarser than the tip
+    // land: the last 2 h_coast of the coast flank take the geometric mean of the two sizes.
+    // Without it gmsh's Blossom recombination leaves triangle pairs at that corner (Parker
+    // gear, h_contact 0.075 mm, h_coast 0.25 mm) and the mesher falls back to subdivision.
+    const double h_coast_flank = coast_size(p), h_tip_land = contact_size(p, m);
+    const double h_coast_corner = std::sqrt(h_coast_flank * h_tip_land);
+    CornerZone coast_corner;
+    if (h_coast_flank > coast_jump_limit * h_tip_land)
+      {
+        coast_corner            = tip_corner(segs, geometry::Side::coast, 2 * h_coast_flank);
+        coast_corner.segment[1] = -1; // the tip land keeps h_contact
+      }
+    // Tooth placement offsets: tooth k turned by delta_k; the root lands of teeth k - 1 and k
+    // meet at the mean of their offsets (the ends of a sector keep their own).
+    check_tooth_angles(tooth, p.tooth_angles, "tooth placement offsets of the " + std::to_string(z) + "-tooth gear");
+    const bool turned = !p.tooth_angles.empty() && max_tooth_angle_step(tooth) > 0;
+    const std::vector<int> teeth = model_teeth(p, z);
+    const auto delta = [&](int k) { return p.tooth_angles.empty() ? 0.0 : p.tooth_angles[std::size_t(mod(k, z))]; };
+    for (const int k : teeth)
+      {
+        const double angle = 2.0 * pi * k / z + delta(k);
+        const bool is_fine = fine_set.count(mod(k, z)) > 0;
+        for (std::size_t s = 0; s < segs.size(); ++s)
+          {
+            const auto &sg = segs[s];
+            BoundaryPiece piece;
+            piece.curve       = ParametricCurve::from(sg.curve, angle);
+            piece.t0          = sg.t0;
+            piece.t1          = sg.t1;
+            const auto code   = segment_code(sg.type, sg.side);
+            piece.boundary_id = boundary::tooth_id(mod(k, z), code);
+            piece.tooth       = mod(k, z);
+            piece.segment     = int(s);
+            if (turned && (s == 0 || s + 1 == segs.size()))
+              {
+                const bool full = p.model == GearMeshParameters::Model::full_gear;
+                const int next  = s == 0 ? k - 1 : k + 1;
+                const bool end  = next < teeth.front() || next > teeth.back();
+                root_land_arc(piece, s == 0, full || !end ? 0.5 * (delta(next) - delta(k)) : 0.0);
+              }
+            // The fillet of a closed rack's tooth carries contact (geometry::GeneratingRack::closed).
+            const bool contact_fillet = sg.type == geometry::SegmentType::fillet && tooth.rack().closed();
+            const bool flank_like = sg.type == geometry::SegmentType::flank ||
+                                    sg.type == geometry::SegmentType::tip ||
+                                    sg.type == geometry::SegmentType::tip_rounding || contact_fillet;
+            const bool coast = sg.side == geometry::Side::coast &&
+                               (sg.type == geometry::SegmentType::flank ||
+                                sg.type == geometry::SegmentType::tip_rounding || contact_fillet);
+            const double h_flank = coast ? coast_size(p) : contact_size(p, m);
+            piece.size = !is_fine ? h_coarse : (flank_like ? h_flank : p.h_fillet);
+            // Split fine flanks at the requested radii (those inside the piece).
+            std::vector<double> cuts;
+            for (int i = 0; i < 2; ++i)
+              for (const CornerZone *zone : {&corner, static_cast<const CornerZone *>(&coast_corner)})
+                if (is_fine && zone->segment[i] == int(s))
+                  cuts.push_back(zone->t_cut[i]);
+            if (is_fine && sg.type == geometry::SegmentType::flank)
+              for (const double r : p.flank_split_radii)
+                {
+                  const double ra = sg.curve->point(sg.t0).norm(), rb = sg.curve->point(sg.t1).norm();
+                  if (!(r > std::min(ra, rb) + 1e-3 * contact_size(p, m) && r < std::max(ra, rb) - 1e-3 * contact_size(p, m)))
+                    continue;
+                  cuts.push_back(geometry::parameter_at_radius(*sg.curve, sg.t0, sg.t1, r));
+                }
+            std::sort(cuts.begin(), cuts.end(), [&](double x, double y) {
+              return (sg.t1 >= sg.t0) ? x < y : x > y;
+            });
+            double t_prev = piece.t0;
+            for (const double c : cuts)
+              {
+                BoundaryPiece first = piece;
+                first.t0            = t_prev;
+                first.t1            = c;
+                if (is_fine && corner.contains(int(s), 0.5 * (first.t0 + first.t1)))
+                  first.size = h_corner;
+                if (is_fine && coast_corner.contains(int(s), 0.5 * (first.t0 + first.t1)))
+                  first.size = h_coast_corner;
+                outer.pieces.push_back(first);
+                t_prev = c;
+              }
+            piece.t0 = t_prev;
+            if (is_fine && corner.contains(int(s), 0.5 * (piece.t0 + piece.t1)))
+              piece.size = h_corner;
+            if (is_fine && coast_corner.contains(int(s), 0.5 * (piece.t0 + piece.t1)))
+              piece.size = h_coast_corner;
+            outer.pieces.push_back(piece);
+          }
+      }
+    close_domain(d, std::move(outer), p, ri);
     return d;
   }
 

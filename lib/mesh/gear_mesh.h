@@ -42,6 +42,12 @@ namespace gearfem::mesh
     std::vector<double> flank_split_radii;
     unsigned int refinements = 0; ///< global refinements after import
     int spline_samples       = 24; ///< gmsh spline points per outline segment
+    /// Extra placement angles delta_k [rad] of the teeth, counter-clockwise: tooth k (0 <= k < z)
+    /// stands at 2 pi k / z + delta_k (a pitch deviation built into the geometry). Empty: every
+    /// tooth at its nominal pitch; else z values. Consecutive teeth meet on their root lands at
+    /// the mean of their offsets (gear_domain). Not a `Mesh` entry: set by a caller that builds
+    /// deviations into the geometry (docs/deviations.md).
+    std::vector<double> tooth_angles;
 
     /// Throws InputError naming the `Mesh` entry for N < 1, sizes <= 0, h_contact or
     /// h_fillet > h_body, growth <= 1, bad fine-teeth lists.
@@ -64,11 +70,24 @@ namespace gearfem::mesh
   /// Radius of the inner boundary (bore or fixed rim) [m]. Throws InputError when it
   /// leaves no material (bore radius >= root radius, rim thickness >= root radius).
   double inner_radius(const GearMeshParameters &p, const geometry::ToothProfile &tooth);
+  /// Largest difference |delta_k - delta_(k-1)| [rad] of the tooth placement offsets of
+  /// neighbouring teeth that gear_domain accepts: the angle of half a root land (each root land
+  /// gives or takes half the difference and keeps at least half its length); 0 when the outline
+  /// has no root land arc (the fillets of neighbouring teeth meet at a point: rotated teeth
+  /// would overlap or leave a gap there, so no offsets are accepted).
+  double max_tooth_angle_step(const geometry::ToothProfile &tooth);
+  /// Checks offsets for `tooth` (InputError naming `entry`): empty or z finite values, and
+  /// neighbouring differences within max_tooth_angle_step.
+  void check_tooth_angles(const geometry::ToothProfile &tooth, const std::vector<double> &angles,
+                          const std::string &entry);
   /// Boundary-id code of an outline segment (mesh::boundary::Code).
   boundary::Code segment_code(geometry::SegmentType type, geometry::Side side);
 
   /// The domain of the gear body: outline pieces with ids 1000 (tooth + 1) + code, the
-  /// bore (id 1) and, for sectors, the cut edges (ids 2, 3).
+  /// bore (id 1) and, for sectors, the cut edges (ids 2, 3). With tooth_angles, tooth k is
+  /// turned by delta_k and the root lands where teeth k - 1 and k meet become arcs of the root
+  /// circle that meet at the mean angle (delta_(k-1) + delta_k) / 2 past the nominal one: an arc
+  /// of the root circle turned about the centre stays on it, so the outline closes exactly.
   Domain gear_domain(const geometry::ToothProfile &tooth, const GearMeshParameters &p);
 
   /// Mesh the gear body with gmsh (and write `msh_file` when not empty).

@@ -270,6 +270,14 @@ namespace gearfem::solve
           << ' ' << m.h_coast << ' ' << m.h_corner << ' ' << m.h_body << ' ' << m.h_tooth << ' ' << m.growth << ' '
           << m.bore_radius << ' ' << m.rim_thickness << ' ' << m.fine_teeth << ' ' << m.refinements << ' '
           << m.spline_samples << '\n';
+        // Teeth turned by their pitch deviations (Deviations/Model = geometry); none: no line.
+        if (!m.tooth_angles.empty())
+          {
+            s << "tooth angles";
+            for (const double d : m.tooth_angles)
+              s << ' ' << d;
+            s << '\n';
+          }
         const auto &e = in.material[i - 1];
         s << "material " << e.youngs_modulus << ' ' << e.poisson_ratio << ' ' << e.thickness << ' '
           << static_cast<int>(e.model) << '\n';

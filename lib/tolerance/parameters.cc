@@ -149,6 +149,12 @@ namespace gearfem::tolerance
   void declare_deviation_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Deviations");
+    prm.declare_entry("Model", "condensed", dealii::Patterns::Selection("condensed|geometry"),
+                      "condensed: the hunting cycle on a condensed cycle, every deviation as a gap and drive-advance "
+                      "offset of the contact candidates. geometry: the single pitch deviations built into the mesh "
+                      "(tooth k turned by F_p,k / r_ref about the gear centre, F_p about the teeth's mean) and the "
+                      "full-FE sweep over the positions of the Solve section; no other deviation kind, no accuracy "
+                      "grade, Pitches unused (docs/deviations.md).");
     prm.declare_entry("Pitches", "hunting", dealii::Patterns::Anything(),
                       "Length of the cycle solved with the deviations: 'hunting' (lcm(z1, z2) pitches, after which "
                       "every tooth pair recurs) or a number of pinion pitches (z1 per pinion revolution). Runs only "
@@ -172,6 +178,8 @@ namespace gearfem::tolerance
   {
     DeviationParameters p;
     prm.enter_subsection("Deviations");
+    p.model = prm.get("Model") == "geometry" ? DeviationParameters::Model::geometry :
+                                               DeviationParameters::Model::condensed;
     const std::string pitches = dealii::Utilities::trim(prm.get("Pitches"));
     if (pitches != "hunting")
       {

@@ -21,6 +21,13 @@ namespace gearfem::tolerance
 {
   struct DeviationParameters
   {
+    /// How the deviations enter the contact problem (`Deviations/Model`).
+    enum class Model
+    {
+      condensed, ///< the hunting cycle on a condensed cycle: deviations as gap and advance offsets
+      geometry   ///< single pitch deviations built into the mesh (teeth turned), the full-FE sweep of `Solve`
+    };
+    Model model = Model::condensed;
     /// Pitches of the cycle: 0 = the hunting period lcm(z1, z2).
     long pitches = 0;
     /// ISO 1328-1 accuracy grade (1..11) of a random draw; 0: no draw.

@@ -140,3 +140,89 @@ TEST(GearMesh, FineContactCoarseCoastRecombines)
             << q.min_angle << "-" << q.max_angle << " deg, meshed in " << m.mesh_seconds << " s"
             << std::endl;
 }
+
+// Tooth placement offsets (a pitch deviation built into the geometry). Reference: tooth k's
+// outline is tooth 0's turned by 2 pi k / z + delta_k (counter-clockwise for delta_k > 0), and
+// neighbouring teeth meet on the root circle at the mean of their offsets.
+TEST(GearMesh, ToothAnglesTurnTheTeethAndCloseTheOutline)
+{
+  const int z      = 20;
+  const auto tooth = make_tooth(z);
+  mesh::GearMeshParameters p;
+  p.h_contact = p.h_fillet = 0.5e-3;
+  p.h_body                 = 3e-3;
+  p.fine_teeth             = "3";
+  p.tooth_angles.assign(z, 0.0);
+  p.tooth_angles[3] = 3e-4, p.tooth_angles[4] = -2e-4;
+  const double pi = units::pi;
+  ASSERT_GT(mesh::max_tooth_angle_step(tooth), 5e-4);
+  const mesh::Domain d = mesh::gear_domain(tooth, p);
+  const auto &pieces   = d.loops.at(0).pieces;
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    EXPECT_LT((pieces[i].end() - pieces[(i + 1) % pieces.size()].start()).norm(), 1e-12) << "piece " << i;
+  // The drive flank of tooth 3 at mid-parameter: the nominal flank turned by 6 pi / z + delta_3.
+  const auto &segs = tooth.segments();
+  for (std::size_t s = 0; s < segs.size(); ++s)
+    if (segs[s].type == geometry::SegmentType::flank && segs[s].side == geometry::Side::drive)
+      {
+        const mesh::Vec2 q = segs[s].point(0.5);
+        const double a     = 2 * pi * 3 / z + 3e-4;
+        const mesh::Vec2 expected(std::cos(a) * q.x() - std::sin(a) * q.y(), std::sin(a) * q.x() + std::cos(a) * q.y());
+        double nearest = 1; // the flank may be split into pieces (tip-corner grading)
+        for (const auto &pc : pieces)
+          if (pc.boundary_id == mesh::boundary::tooth_id(3, mesh::boundary::flank_drive))
+            {
+              const double t = pc.curve.closest_parameter(expected, std::min(pc.t0, pc.t1), std::max(pc.t0, pc.t1));
+              nearest        = std::min(nearest, (pc.curve.point(t) - expected).norm());
+            }
+        EXPECT_LT(nearest, 1e-10);
+      }
+  // Root lands: tooth 3 starts at the mean of delta_2 = 0 and delta_3, and ends at the mean of
+  // delta_3 and delta_4, on the root circle.
+  const double rf = tooth.radii().root;
+  for (const auto &pc : pieces)
+    if (pc.tooth == 3 && pc.segment == 0)
+      {
+        EXPECT_NEAR(std::atan2(pc.start().y(), pc.start().x()), pi / 2 - pi / z + 2 * pi * 3 / z + 1.5e-4, 1e-12);
+        EXPECT_NEAR(pc.start().norm(), rf, 1e-12);
+      }
+    else if (pc.tooth == 3 && pc.segment == int(segs.size()) - 1)
+      {
+        EXPECT_NEAR(std::atan2(pc.end().y(), pc.end().x()), pi / 2 + pi / z + 2 * pi * 3 / z + 0.5e-4, 1e-12);
+        EXPECT_NEAR(pc.end().norm(), rf, 1e-12);
+      }
+  // Meshed: valid quads, and every vertex of tooth 3's drive flank lies on the turned flank,
+  // 3e-4 rad x r (about 9 um) away from the nominal one.
+  const auto m = mesh::mesh_gear(tooth, p);
+  EXPECT_EQ(mesh::quality(m).n_inverted, 0u);
+  dealii::Triangulation<2> tria;
+  mesh::create_triangulation(m, tria);
+  EXPECT_LE(mesh::max_boundary_vertex_distance(m, tria), 1e-9);
+  double worst_turned = 0, least_nominal = 1;
+  int n = 0;
+  for (std::size_t s = 0; s < segs.size(); ++s)
+    if (segs[s].type == geometry::SegmentType::flank && segs[s].side == geometry::Side::drive)
+      {
+        const auto turned  = mesh::ParametricCurve::from(segs[s].curve, 2 * pi * 3 / z + 3e-4);
+        const auto nominal = mesh::ParametricCurve::from(segs[s].curve, 2 * pi * 3 / z);
+        const double lo = std::min(segs[s].t0, segs[s].t1), hi = std::max(segs[s].t0, segs[s].t1);
+        for (const auto &f : tria.active_face_iterators())
+          if (f->at_boundary() && f->boundary_id() == mesh::boundary::tooth_id(3, mesh::boundary::flank_drive))
+            for (unsigned v = 0; v < 2; ++v)
+              {
+                const mesh::Vec2 x(f->vertex(v)[0], f->vertex(v)[1]);
+                worst_turned  = std::max(worst_turned, (turned.point(turned.closest_parameter(x, lo, hi)) - x).norm());
+                least_nominal = std::min(least_nominal, (nominal.point(nominal.closest_parameter(x, lo, hi)) - x).norm());
+                ++n;
+              }
+      }
+  EXPECT_GT(n, 10);
+  EXPECT_LT(worst_turned, 1e-9);
+  EXPECT_GT(least_nominal, 0.5 * 3e-4 * tooth.radii().base);
+  // Refused: a wrong count, and a step between neighbours beyond half a root land.
+  p.tooth_angles.resize(z - 1);
+  EXPECT_THROW(mesh::gear_domain(tooth, p), InputError);
+  p.tooth_angles.assign(z, 0.0);
+  p.tooth_angles[5] = 1.01 * mesh::max_tooth_angle_step(tooth);
+  EXPECT_THROW(mesh::gear_domain(tooth, p), InputError);
+}
