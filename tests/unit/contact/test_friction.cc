@@ -210,3 +210,47 @@ TEST(Friction, PenaltyAgreesWithLagrangeAndTangentIsConsistent)
   const double k_fd = (c.torque - a.torque) / (c.rotation() - a.rotation());
   EXPECT_NEAR(a.solution.tangent / k_fd, 1.0, 0.02);
 }
+
+TEST(Friction, ReversesAsTheContactCrossesThePitchPoint)
+{
+  // The sliding speed of a point is 2 w1 times its distance from C along the line of action
+  // (1:1 pair); a patch lies across the line of action, so all its points slide alike and the
+  // whole patch reverses as the contact passes C. 1e-3 rad of roll either side of C (70 um of
+  // path) is far outside the ramp (1e-4 of the pitch-line speed, 3.8 um of path): every point
+  // carries mu lambda, against its sliding, and the two sides have opposite signs.
+  // A 3-tooth sector pair with 0.05 mm contact elements: about 12 nodes across the patch.
+  dealii::ParameterHandler prm;
+  solve::declare_gear_contact_input(prm);
+  prm.parse_input_from_string(gearfem::test::parker_pair(R"(
+subsection Mesh
+  set Model        = sector
+  set Sector teeth = 3
+  set h_contact    = 0.05
+  set h_fillet     = 0.5
+  set h_body       = 5
+end
+)"));
+  const auto in = solve::parse_gear_contact_input(prm);
+  ContactOptions o;
+  o.friction = 0.05;
+  GearContactModel model(*in.pair, in.mesh, in.material, in.fe, o);
+  const double rb1 = in.pair->base_radius(1);
+  for (const double phi : {-1e-3, 1e-3})
+    {
+      const auto s = model.solve(phi, 200.0);
+      int n = 0;
+      for (const auto &p : s.solution.points)
+        {
+          if (!(p.force > 0))
+            continue;
+          ++n;
+          // Closed form: v_s = 2 (phi rb1) per unit pinion speed, to the elastic shift of the
+          // material points in contact (a few um of path).
+          EXPECT_NEAR(std::abs(p.sliding), 2 * std::abs(phi) * rb1, 0.1 * 2 * std::abs(phi) * rb1);
+          EXPECT_NEAR(std::abs(p.friction), 0.05 * p.force, 1e-9 * p.force);
+          EXPECT_LT(p.friction * p.sliding, 0.0); // against the slave's sliding
+          EXPECT_EQ(p.sliding > 0, phi < 0) << "the sign flips between approach and recess";
+        }
+      EXPECT_GE(n, 5) << "contact points across the patch";
+    }
+}
