@@ -5,6 +5,7 @@
 // continues a killed run from its journal.
 #include "base/errors.h"
 #include "base/memory.h"
+#include "base/units.h"
 #include "commands/command.h"
 #include "solve/input.h"
 #include "io/journal.h"
@@ -142,6 +143,20 @@ namespace gearfem::commands
                << process_cpu_seconds() - cpu_setup
                << "}";
           ctx.outcome->record_members.emplace_back("cost", cost.str());
+          if (!r.friction.empty())
+            {
+              // The coefficient applied at each torque, at full precision (docs/friction.md).
+              std::ostringstream f;
+              f << std::setprecision(17) << "{\"law\": \"" << analytical::friction::to_string(in.friction.law)
+                << "\", \"pinion_speed_rpm\": " << in.friction.pinion_speed * 30 / units::pi << ", \"torques\": [";
+              for (std::size_t i = 0; i < in.solve.torques.size(); ++i)
+                f << (i ? ", " : "") << in.solve.torques[i];
+              f << "], \"coefficients\": [";
+              for (std::size_t i = 0; i < r.friction.size(); ++i)
+                f << (i ? ", " : "") << r.friction[i];
+              f << "]}";
+              ctx.outcome->record_members.emplace_back("friction", f.str());
+            }
         }
       if (in.solve.error_estimate)
         {

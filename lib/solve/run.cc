@@ -287,7 +287,7 @@ namespace gearfem::solve
       {
         std::ostringstream mu;
         for (std::size_t i = 0; i < plan.friction.size(); ++i)
-          mu << (i ? ", " : "") << to_string_g(plan.friction[i]);
+          mu << (i ? ", " : "") << std::setprecision(17) << plan.friction[i];
         t.attributes["friction_law"]          = analytical::friction::to_string(in.friction.law);
         t.attributes["friction_coefficients"] = mu.str(); // per torque, in the order of Solve/Torques
         run.friction = plan.friction;
