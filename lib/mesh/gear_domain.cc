@@ -380,6 +380,11 @@ namespace gearfem::mesh
     const std::vector<int> fine = fine_teeth(p, z);
     const std::set<int> fine_set(fine.begin(), fine.end());
     const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
+    // A corner grading finer than h_contact/50 adds thousands of elements per corner and
+    // hangs gmsh's size-field meshing (0.5 nm under 0.5 mm ran past any time limit).
+    if (p.h_corner > 0 && p.h_corner < contact_size(p, m) / 50)
+      throw InputError("Mesh/h_corner", to_string_g(p.h_corner * 1e3) + " mm",
+                       "0 (h_contact/4) or >= h_contact/50 = " + to_string_g(contact_size(p, m) / 50 * 1e3) + " mm");
     check_resolution(p, tooth, ri, h_coarse, int(model_teeth(p, z).size()), int(fine.size()));
 
     Domain d;

@@ -37,7 +37,7 @@ namespace gearfem::mesh
                       "pressing into the mating flank has a singular pressure; 0: h_contact/4 "
                       "(STE converged to 0.5 % between h_contact 0.1 and 0.05 mm at the corner "
                       "positions, docs/contact.md); >= h_contact: no grading. Units: mm. "
-                      "Allowed: >= 0.");
+                      "Allowed: 0 or >= h_contact/50.");
     prm.declare_entry("h_fillet", "0.25", Double(),
                       "Element size on the fillets and root of the fine teeth. Units: mm. "
                       "Allowed: > 0 and <= h_body.");
