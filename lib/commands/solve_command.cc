@@ -24,6 +24,63 @@
 
 namespace gearfem::commands
 {
+  solve::SolveRunResult run_full_fe(contact::GearContactModel &model, const solve::GearContactInput &in,
+                                    const post::PostOptions &post, const RunContext &ctx, double setup_seconds,
+                                    double cpu_setup, double mesh_seconds, const std::string &label)
+  {
+    std::ostream &out = *ctx.out;
+    for (int i = 1; i <= 2; ++i)
+      if (model.body(i).mesh().subdivided)
+        out << "note: gear " << i << "'s all-quad mesh comes from gmsh's subdivision fallback (Blossom "
+            << "recombination failed): smaller, less regular cells; `gearfem mesh` reports its quality" << std::endl;
+    solve::SolveRunOptions opt;
+    opt.output_dir = ctx.output_dir;
+    opt.input_name = ctx.input_file.filename().string();
+    std::ostringstream content;
+    content << std::ifstream(ctx.input_file).rdbuf();
+    opt.input_hash = io::content_hash(content.str());
+    opt.resume     = ctx.resume;
+    opt.out        = &out;
+    opt.post       = post;
+    const solve::SolveRunResult r = solve::run_solve(model, in, opt);
+    if (in.solve.plots && r.results.sweep.n_rows() > 0)
+      run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
+    if (!r.failure.empty())
+      throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
+                        " completed positions are saved in " + ctx.output_dir.string() +
+                        " (their journal stays: with the input unchanged, --resume retries from the failed position)");
+    out << "\n" << solve::summary_table(r, *in.pair, in.solve.torques) << "time: contact " << r.seconds.at("contact")
+        << " s, post-processing " << r.seconds.at("post") << " s, output " << r.seconds.at("output") << " s"
+        << (label.empty() ? "" : " (" + label + ")") << "\n";
+    if (!ctx.outcome)
+      return r;
+    // The cost of the run, for the speed-against-error study (validation/speed_vs_error).
+    std::ostringstream cost;
+    cost << std::setprecision(6) << "{" << (label.empty() ? "" : "\"deviations_in_geometry\": true, ")
+         << "\"dofs\": " << model.n_dofs() << ", \"mesh_seconds\": " << mesh_seconds
+         << ", \"setup_seconds\": " << setup_seconds << ", \"contact_seconds\": " << r.seconds.at("contact")
+         << ", \"post_seconds\": " << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
+         << ", \"positions\": " << r.results.sweep.n_rows() << ", \"peak_memory_mb\": " << peak_memory_mb()
+         << ", \"cpu_setup_seconds\": " << cpu_setup << ", \"cpu_sweep_seconds\": " << process_cpu_seconds() - cpu_setup
+         << "}";
+    ctx.outcome->record_members.emplace_back("cost", cost.str());
+    if (!r.friction.empty())
+      {
+        // The coefficient applied at each torque, at full precision (docs/friction.md).
+        std::ostringstream f;
+        f << std::setprecision(17) << "{\"law\": \"" << analytical::friction::to_string(in.friction.law)
+          << "\", \"pinion_speed_rpm\": " << in.friction.pinion_speed * 30 / units::pi << ", \"torques\": [";
+        for (std::size_t i = 0; i < in.solve.torques.size(); ++i)
+          f << (i ? ", " : "") << in.solve.torques[i];
+        f << "], \"coefficients\": [";
+        for (std::size_t i = 0; i < r.friction.size(); ++i)
+          f << (i ? ", " : "") << r.friction[i];
+        f << "]}";
+        ctx.outcome->record_members.emplace_back("friction", f.str());
+      }
+    return r;
+  }
+
   namespace
   {
     void declare(dealii::ParameterHandler &prm)
@@ -105,59 +162,8 @@ namespace gearfem::commands
           << model->body(2).triangulation().n_active_cells() << " cells, mesh " << std::setprecision(3)
           << model->mesh_seconds() << " s, set-up (mesh, assemble, factorise) " << model->setup_seconds()
           << " s" << std::endl;
-      for (int i = 1; i <= 2; ++i)
-        if (model->body(i).mesh().subdivided)
-          out << "note: gear " << i << "'s all-quad mesh comes from gmsh's subdivision fallback (Blossom "
-              << "recombination failed): smaller, less regular cells; `gearfem mesh` reports its quality"
-              << std::endl;
-
-      solve::SolveRunOptions opt;
-      opt.output_dir = ctx.output_dir;
-      opt.input_name = ctx.input_file.filename().string();
-      std::ostringstream content;
-      content << std::ifstream(ctx.input_file).rdbuf();
-      opt.input_hash = io::content_hash(content.str());
-      opt.resume     = ctx.resume;
-      opt.out        = &out;
-      opt.post       = post_options;
-      const solve::SolveRunResult r = solve::run_solve(*model, in, opt);
-      if (in.solve.plots && r.results.sweep.n_rows() > 0)
-        run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
-      if (!r.failure.empty())
-        throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
-                          " completed positions are saved in " + ctx.output_dir.string() +
-                          " (their journal stays: with the input unchanged, --resume retries from the failed position)");
-      out << "\n" << solve::summary_table(r, pair, in.solve.torques) << "time: contact "
-          << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
-          << r.seconds.at("output") << " s\n";
-      if (ctx.outcome)
-        {
-          // The cost of the run, for the speed-against-error study (validation/speed_vs_error).
-          std::ostringstream cost;
-          cost << std::setprecision(6) << "{\"dofs\": " << model->n_dofs() << ", \"mesh_seconds\": "
-               << model->mesh_seconds() << ", \"setup_seconds\": " << model->setup_seconds()
-               << ", \"contact_seconds\": " << r.seconds.at("contact") << ", \"post_seconds\": "
-               << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
-               << ", \"positions\": " << r.results.sweep.n_rows() << ", \"peak_memory_mb\": " << peak_memory_mb()
-               << ", \"cpu_setup_seconds\": " << cpu_setup << ", \"cpu_sweep_seconds\": "
-               << process_cpu_seconds() - cpu_setup
-               << "}";
-          ctx.outcome->record_members.emplace_back("cost", cost.str());
-          if (!r.friction.empty())
-            {
-              // The coefficient applied at each torque, at full precision (docs/friction.md).
-              std::ostringstream f;
-              f << std::setprecision(17) << "{\"law\": \"" << analytical::friction::to_string(in.friction.law)
-                << "\", \"pinion_speed_rpm\": " << in.friction.pinion_speed * 30 / units::pi << ", \"torques\": [";
-              for (std::size_t i = 0; i < in.solve.torques.size(); ++i)
-                f << (i ? ", " : "") << in.solve.torques[i];
-              f << "], \"coefficients\": [";
-              for (std::size_t i = 0; i < r.friction.size(); ++i)
-                f << (i ? ", " : "") << r.friction[i];
-              f << "]}";
-              ctx.outcome->record_members.emplace_back("friction", f.str());
-            }
-        }
+      const solve::SolveRunResult r =
+        run_full_fe(*model, in, post_options, ctx, model->setup_seconds(), cpu_setup, model->mesh_seconds(), "");
       if (in.solve.error_estimate)
         {
           solve::ErrorEstimateOptions eo;

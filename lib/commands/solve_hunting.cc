@@ -60,39 +60,8 @@ namespace gearfem::commands
       const double cpu_setup = process_cpu_seconds();
       out << "model: " << model.n_dofs() << " DoFs (" << model.body(1).n_dofs() << " + " << model.body(2).n_dofs()
           << "), set-up (mesh, assemble, factorise) " << std::setprecision(3) << setup << " s" << std::endl;
-      for (int i = 1; i <= 2; ++i)
-        if (model.body(i).mesh().subdivided)
-          out << "note: gear " << i << "'s all-quad mesh comes from gmsh's subdivision fallback (Blossom "
-              << "recombination failed): smaller, less regular cells; `gearfem mesh` reports its quality" << std::endl;
-      solve::SolveRunOptions opt;
-      opt.output_dir = ctx.output_dir;
-      opt.input_name = ctx.input_file.filename().string();
-      std::ostringstream content;
-      content << std::ifstream(ctx.input_file).rdbuf();
-      opt.input_hash = io::content_hash(content.str());
-      opt.resume     = ctx.resume;
-      opt.out        = &out;
-      opt.post       = post;
-      const solve::SolveRunResult r = solve::run_solve(model, in, opt);
-      if (in.solve.plots && r.results.sweep.n_rows() > 0)
-        run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
-      if (!r.failure.empty())
-        throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
-                          " completed positions are saved in " + ctx.output_dir.string() +
-                          " (their journal stays: with the input unchanged, --resume retries from the failed position)");
-      out << "\n" << solve::summary_table(r, *in.pair, in.solve.torques) << "time: contact " << r.seconds.at("contact")
-          << " s, post-processing " << r.seconds.at("post") << " s, output " << r.seconds.at("output")
-          << " s (full FE, pitch deviations in the geometry)\n";
-      if (ctx.outcome)
-        {
-          std::ostringstream cost;
-          cost << std::setprecision(6) << "{\"deviations_in_geometry\": true, \"dofs\": " << model.n_dofs()
-               << ", \"setup_seconds\": " << setup << ", \"contact_seconds\": " << r.seconds.at("contact")
-               << ", \"post_seconds\": " << r.seconds.at("post") << ", \"positions\": " << r.results.sweep.n_rows()
-               << ", \"peak_memory_mb\": " << peak_memory_mb() << ", \"cpu_setup_seconds\": " << cpu_setup
-               << ", \"cpu_sweep_seconds\": " << process_cpu_seconds() - cpu_setup << "}";
-          ctx.outcome->record_members.emplace_back("cost", cost.str());
-        }
+      (void)run_full_fe(model, in, post, ctx, setup, cpu_setup, model.mesh_seconds(),
+                        "full FE, pitch deviations in the geometry");
     }
   } // namespace
 
