@@ -183,6 +183,13 @@ namespace gearfem::contact
           for (const auto &[i, v] : L.B[b][k])
             used[b].push_back(i);
       }
+    delassus(L, used, t_compliance);
+    return L;
+  }
+
+  void TwoBodyContact::delassus(Linearisation &L, std::vector<int> used[2], double &t_compliance)
+  {
+    const int m = int(L.a.size());
     for (int b = 0; b < 2; ++b)
       {
         std::sort(used[b].begin(), used[b].end());
@@ -214,9 +221,8 @@ namespace gearfem::contact
             for (const auto &[j, w] : L.B[b][l])
               L.W(l, k) += w * t[j];
         }
-    if (mu == 0)
+    if (L.F[0].empty() && L.F[1].empty())
       L.W = 0.5 * (L.W + L.W.transpose()).eval();
-    return L;
   }
 
   Vec2 TwoBodyContact::rigid_velocity(const Scene &scene, int body, const Vec2 &x) const

@@ -297,6 +297,9 @@ namespace gearfem::contact
                        std::vector<int> &face_sample) const;
     Linearisation linearise(const Scene &scene, const SearchResult &sr, double q,
                             const std::vector<double> &lambda_node, double &t_compliance);
+    /// The Delassus operator W (W_f with friction) of `L` from its rows, after computing the
+    /// flexibility columns of the universe indices `used` (sorted and made unique here).
+    void delassus(Linearisation &L, std::vector<int> used[2], double &t_compliance);
     void fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
                        const Linearisation &lin, const Eigen::VectorXd &lambda,
                        const Eigen::VectorXd &gap, const Scene &scene, double q) const;
