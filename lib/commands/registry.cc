@@ -15,6 +15,7 @@ namespace gearfem::commands
   Command gearbox_command();
   Command optimise_command();
   Command tolerance_command();
+  Command export_command();
 
   const std::vector<Command> &registry()
   {
@@ -30,6 +31,7 @@ namespace gearfem::commands
       batch_command(),
       optimise_command(),
       tolerance_command(),
+      export_command(),
       bench_command(),
     };
     return commands;

@@ -38,6 +38,7 @@ ALLOWED = {
     'batch': {'base', 'params', 'io', 'geometry', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve', 'condensed'},
     'tolerance': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'dynamics', 'mesh', 'fem',
                   'contact', 'loading', 'post', 'solve', 'condensed'},
+    'exchange': {'base', 'params', 'io'},
     'commands': None,  # wires everything together
 }
 # Modules (or their light parts) that must not see deal.II, gmsh or PETSc.
