@@ -30,6 +30,8 @@ namespace gearfem::mesh
             return "cut_ccw";
           case outer:
             return "outer";
+          case ring_free:
+            return "ring_free";
         }
       if (id < 1000)
         return "boundary_" + std::to_string(id);

@@ -24,6 +24,9 @@ namespace gearfem::mesh
     inline constexpr unsigned int cut_cw  = 2; ///< sector cut edge on the clockwise side
     inline constexpr unsigned int cut_ccw = 3; ///< sector cut edge on the counter-clockwise side
     inline constexpr unsigned int outer   = 4; ///< outer boundary of the test domains
+    /// Outer circle of a ring between its support arcs (free; ring_domain.h, bolts model).
+    /// For a ring, `bore` is its outer support (the whole circle, or the bolt arcs).
+    inline constexpr unsigned int ring_free = 5;
 
     /// Segment codes of a tooth boundary id 1000 (tooth + 1) + code.
     enum Code : unsigned int
