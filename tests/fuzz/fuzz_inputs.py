@@ -2,8 +2,8 @@
 """Mutation fuzzer for gearfem input files, over every command.
 
 Mutates every inputs/*.prm and the small seeds of tests/fuzz/seeds/ (one per command that
-has no input cheap enough to run: solve, condense, batch, optimise, calibrate, tolerance, and solve
-with manufacturing deviations) with a fixed
+has no input cheap enough to run: solve, condense, batch, optimise, calibrate, tolerance, export,
+solve with manufacturing deviations and solve with friction) with a fixed
 seed, and runs each mutant through `gearfem <command> --validate`. A fraction of the mutants
 of the cheap inputs (the seeds, and the inputs that finish in seconds: CHEAP) also get a real
 run; mutants of the solve seed are re-solved on a condensed cycle (`--condensed`) half the
