@@ -21,6 +21,19 @@ namespace gearfem::contact
       const double c = std::cos(angle), s = std::sin(angle);
       return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
     }
+
+    /// Merge the repeated universe indices of a row of force directions.
+    void compress(std::vector<std::pair<int, double>> &row)
+    {
+      std::sort(row.begin(), row.end());
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < row.size(); ++i)
+        if (n > 0 && row[n - 1].first == row[i].first)
+          row[n - 1].second += row[i].second;
+        else
+          row[n++] = row[i];
+      row.resize(n);
+    }
   } // namespace
 
   TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene, const SearchResult &sr, double q,
@@ -54,9 +67,6 @@ namespace gearfem::contact
       }
     // Sliding velocity of the slave (body S) relative to the master along t = (-n_y, n_x)
     // at the slave point x (pair frame), per unit drive rate.
-    const auto sliding = [&](int S, const Vec2 &xs, const Vec2 &xm, const Vec2 &n) {
-      return sliding_velocity(scene, S, xs, xm, n);
-    };
     std::vector<double> coef_sum(m, 0.0);
     L.approach = Eigen::VectorXd::Zero(m);
     std::vector<int> used[2];
@@ -129,16 +139,6 @@ namespace gearfem::contact
         }
     };
     // Merge repeated universe indices of a row.
-    const auto compress = [](std::vector<std::pair<int, double>> &row) {
-      std::sort(row.begin(), row.end());
-      std::size_t n = 0;
-      for (std::size_t i = 0; i < row.size(); ++i)
-        if (n > 0 && row[n - 1].first == row[i].first)
-          row[n - 1].second += row[i].second;
-        else
-          row[n++] = row[i];
-      row.resize(n);
-    };
     for (int k = 0; k < m; ++k)
       {
         const auto &c  = cand[k];
@@ -164,7 +164,7 @@ namespace gearfem::contact
         if (mu > 0)
           {
             L.slip[k] /= coef_sum[k] > 0 ? coef_sum[k] : 1.0;
-            L.sliding[k] = sliding(S, P[S - 1].apply(nd.x), P[2 - S].apply(c.at.pr.point), c.at.n_pair);
+            L.sliding[k] = sliding_velocity(scene, S, P[S - 1].apply(nd.x), P[2 - S].apply(c.at.pr.point), c.at.n_pair);
           }
         double btu = 0;
         for (int b = 0; b < 2; ++b)
