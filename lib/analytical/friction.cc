@@ -49,14 +49,14 @@ namespace gearfem::analytical::friction
       }
   }
 
-  PitchPoint pitch_point(const geometry::GearPair &pair, double T1, double omega1, double b)
+  PitchPoint pitch_point(const geometry::MeshingPair &pair, double T1, double omega1, double b)
   {
     const double aw = pair.working_pressure_angle();
     PitchPoint c;
     c.load_per_width = std::abs(T1) / pair.base_radius(1) / b;
     c.v_sum          = 2.0 * std::abs(omega1) * pair.working_pitch_radius(1) * std::sin(aw);
     const double r1 = pair.base_radius(1) * std::tan(aw), r2 = pair.base_radius(2) * std::tan(aw);
-    c.rho_red        = r1 * r2 / (r1 + r2);
+    c.rho_red        = r1 * r2 / (pair.is_internal() ? r2 - r1 : r1 + r2);
     return c;
   }
 

@@ -44,8 +44,9 @@ namespace gearfem::analytical::friction
   };
   /// Pitch point C of `pair` under pinion torque T1 [N m] at pinion speed omega1 [rad/s],
   /// face width b [m]: F_bt = T1 / r_b1, v_sum = 2 omega1 r_w1 sin(alpha_w),
-  /// rho_i = r_bi tan(alpha_w) (external pair).
-  PitchPoint pitch_point(const geometry::GearPair &pair, double T1, double omega1, double b);
+  /// rho_i = r_bi tan(alpha_w), rho_red = rho1 rho2/(rho1 + rho2) for an external pair and
+  /// rho1 rho2/(rho2 - rho1) for a pinion in a ring (its concave flank).
+  PitchPoint pitch_point(const geometry::MeshingPair &pair, double T1, double omega1, double b);
 
   /// AGMA 925-A03 (Siasos 2010 eqs. 4.4-53/54): 0.06 C_R, C_R = 1.13 / (1.13 - Ra_avg [um])
   /// clamped to [1, 3], Ra_avg = (Ra1 + Ra2) / 2.

@@ -347,7 +347,7 @@ namespace gearfem::batch
         const solve::GearContactInput &in = *input;
         solve::SolveRunOptions opt;
         opt.post          = post::parse_post_parameters(*prm);
-        rec.contact_ratio = in.pair->contact_ratio();
+        rec.contact_ratio = in.meshing().contact_ratio();
         opt.output_dir    = dir;
         opt.input_hash    = rec.key;
         opt.input_name    = job_parameters_file;

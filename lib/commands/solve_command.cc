@@ -49,7 +49,7 @@ namespace gearfem::commands
       throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
                         " completed positions are saved in " + ctx.output_dir.string() +
                         " (their journal stays: with the input unchanged, --resume retries from the failed position)");
-    out << "\n" << solve::summary_table(r, *in.pair, in.solve.torques) << "time: contact " << r.seconds.at("contact")
+    out << "\n" << solve::summary_table(r, in.meshing(), in.solve.torques) << "time: contact " << r.seconds.at("contact")
         << " s, post-processing " << r.seconds.at("post") << " s, output " << r.seconds.at("output") << " s"
         << (label.empty() ? "" : " (" + label + ")") << "\n";
     if (!ctx.outcome)
@@ -112,7 +112,7 @@ namespace gearfem::commands
       if (!r.failure.empty())
         throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
                           " completed positions are saved in " + ctx.output_dir.string());
-      out << "\n" << solve::summary_table(r, *in.pair, in.solve.torques) << "time: contact "
+      out << "\n" << solve::summary_table(r, in.meshing(), in.solve.torques) << "time: contact "
           << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
           << r.seconds.at("output") << " s (" << r.results.sweep.n_rows() << " positions on the condensed cycle)\n";
       if (ctx.outcome)
@@ -132,8 +132,8 @@ namespace gearfem::commands
       std::ostream &out = *ctx.out;
       const solve::GearContactInput in = solve::parse_gear_contact_input(prm);
       const post::PostOptions post_options = post::parse_post_parameters(prm);
-      const auto &pair = *in.pair;
-      out << "solve: z " << pair.gear(1).teeth() << "/" << pair.gear(2).teeth() << ", a "
+      const auto &pair = in.meshing();
+      out << "solve: z " << pair.teeth(1) << "/" << pair.teeth(2) << (pair.is_internal() ? " (internal)" : "") << ", a "
           << pair.center_distance() * 1e3 << " mm, contact ratio " << pair.contact_ratio() << ", "
           << in.positions().size() << " positions x " << in.solve.torques.size() << " torques, method "
           << contact::to_string(in.contact.method) << ", slave body " << in.contact.slave << ", "
@@ -144,14 +144,18 @@ namespace gearfem::commands
       const tolerance::DeviationParameters deviations = tolerance::parse_deviation_parameters(prm);
       if (deviations.active())
         {
+          in.require_external("Deviations");
           run_hunting_cycle(in, post_options, deviations, ctx);
           return;
         }
       if (!ctx.condensed.empty())
         {
+          in.require_external("--condensed");
           run_on_cycle(in, post_options, ctx);
           return;
         }
+      if (in.solve.error_estimate)
+        in.require_external("Solve/Error estimate");
       if (ctx.validate_only)
         return;
 
@@ -169,7 +173,7 @@ namespace gearfem::commands
           solve::ErrorEstimateOptions eo;
           eo.post = post_options;
           eo.out  = &out;
-          out << "\nerror estimate: " << solve::error_sample_positions(pair).size() << " sample positions x "
+          out << "\nerror estimate: " << solve::error_sample_positions(*in.pair).size() << " sample positions x "
               << in.solve.torques.size() << " torques on two mesh levels (Solve/Error estimate)" << std::endl;
           const solve::ErrorEstimate e = solve::estimate_error(*model, in, eo);
           const double sweep = r.seconds.at("contact") + r.seconds.at("post") + r.seconds.at("output");

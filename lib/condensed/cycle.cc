@@ -22,6 +22,7 @@ namespace gearfem::condensed
 
   void check_condensable(const solve::GearContactInput &in)
   {
+    in.require_external("the condensed cycle");
     using Relief = geometry::TipRelief::Kind;
     const bool relief = in.pair->gear(1).parameters().relief.kind != Relief::none ||
                         in.pair->gear(2).parameters().relief.kind != Relief::none;
@@ -123,7 +124,7 @@ namespace gearfem::condensed
     model.observe_root_stress();
     for (int i = 1; i <= 2; ++i)
       {
-        c.body[i - 1].teeth = model.pair().gear(i).teeth();
+        c.body[i - 1].teeth = model.pair().teeth(i);
         for (const auto &o : model.fillets(i))
           {
             FilletSamples fs;

@@ -46,12 +46,12 @@ namespace gearfem::contact
     return it == times.end() ? 0.0 : it->second;
   }
 
-  std::vector<double> cycle_positions(const geometry::GearPair &pair, int n, double pitches, double start)
+  std::vector<double> cycle_positions(const geometry::MeshingPair &pair, int n, double pitches, double start)
   {
     if (n < 1)
       throw InputError("Solve/Number of positions", std::to_string(n), ">= 1");
     require_greater("Solve/Pitches", pitches, 0.0, "-");
-    const double p1 = 2 * pi / pair.gear(1).teeth();
+    const double p1 = 2 * pi / pair.teeth(1);
     std::vector<double> phi(n);
     for (int i = 0; i < n; ++i)
       phi[i] = start + pitches * p1 * i / n;
@@ -94,6 +94,35 @@ namespace gearfem::contact
     return true;
   }
 
+  namespace
+  {
+    /// The factorised body of an external gear meshed as `m` (bore and cut edges clamped).
+    GearBody body_from_mesh(mesh::MeshData m, const mesh::GearMeshParameters &mp, const geometry::ToothProfile &tooth,
+                            const fem::Elasticity &material, const fem::FeOptions &fe)
+    {
+      fem::FeOptions fo = fe;
+      fo.refinements    = fe.refinements + mp.refinements;
+      // The contact solver needs selected entries of K^-1 on the surface: MUMPS computes
+      // them with a pruned elimination tree, UMFPACK only with a full solve per column
+      // (10x slower on a 3-tooth sector), so `automatic` means MUMPS here.
+      if (fo.solver == fem::SolverKind::automatic)
+        fo.solver = fem::SolverKind::mumps;
+      GearBody g;
+      g.body = std::make_unique<fem::ElasticBody>(m, material, fo);
+      g.body->constrain(mesh::boundary::bore);
+      if (mp.model == mesh::GearMeshParameters::Model::sector)
+        {
+          g.body->constrain(mesh::boundary::cut_cw);
+          g.body->constrain(mesh::boundary::cut_ccw);
+        }
+      g.body->assemble_and_factorize();
+      g.fine_teeth = mesh::fine_teeth(mp, tooth.teeth());
+      const double m_n = tooth.parameters().rack.module;
+      g.contact_size   = mesh::contact_size(mp, m_n) / std::pow(2.0, fo_refinements(fe, mp));
+      return g;
+    }
+  } // namespace
+
   GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mp,
                            const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
   {
@@ -110,31 +139,44 @@ namespace gearfem::contact
     Optional scope;
     if (timer)
       scope.emplace(*timer, "assemble and factorise");
+    return body_from_mesh(std::move(m), mp, tooth, material, fe);
+  }
+
+  GearBody build_ring_body(const geometry::InternalToothProfile &ring, const mesh::RingMeshParameters &mp,
+                           const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
+  {
+    using Optional = std::optional<Scope>;
+    mesh::MeshData m;
+    {
+      Optional scope;
+      if (timer)
+        scope.emplace(*timer, "mesh");
+      m = mesh::mesh_ring(ring, mp);
+    }
+    Optional scope;
+    if (timer)
+      scope.emplace(*timer, "assemble and factorise");
     fem::FeOptions fo = fe;
-    fo.refinements    = fe.refinements + mp.refinements;
-    // The contact solver needs selected entries of K^-1 on the surface: MUMPS computes
-    // them with a pruned elimination tree, UMFPACK only with a full solve per column
-    // (10x slower on a 3-tooth sector), so `automatic` means MUMPS here.
     if (fo.solver == fem::SolverKind::automatic)
-      fo.solver = fem::SolverKind::mumps;
+      fo.solver = fem::SolverKind::mumps; // selected entries of K^-1 (build_gear_body)
     GearBody g;
     g.body = std::make_unique<fem::ElasticBody>(m, material, fo);
-    g.body->constrain(mesh::boundary::bore);
-    if (mp.model == mesh::GearMeshParameters::Model::sector)
+    g.body->constrain(mesh::boundary::bore); // the outer support: whole circle or bolt arcs
+    if (mp.model == mesh::RingMeshParameters::Model::sector)
       {
         g.body->constrain(mesh::boundary::cut_cw);
         g.body->constrain(mesh::boundary::cut_ccw);
       }
     g.body->assemble_and_factorize();
-    g.fine_teeth = mesh::fine_teeth(mp, tooth.teeth());
-    const double m_n = tooth.parameters().rack.module;
-    g.contact_size   = mesh::contact_size(mp, m_n) / std::pow(2.0, fo_refinements(fe, mp));
+    g.fine_teeth      = mesh::ring_fine_teeth(mp, ring.parameters().teeth);
+    g.contact_size    = mesh::ring_contact_size(mp, ring.parameters().module) / std::pow(2.0, fo.refinements);
     return g;
   }
 
   GearContactModel::GearContactModel(const geometry::GearPair &pair, std::array<GearBody, 2> bodies,
                                      const ContactOptions &options)
     : pair_(&pair)
+    , gear_pair_(&pair)
     , options_(options)
     , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
@@ -146,6 +188,7 @@ namespace gearfem::contact
                                      const fem::Elasticity material[2], const fem::FeOptions &fe,
                                      const ContactOptions &options, const geometry::GearPair *mesh_pair)
     : pair_(&pair)
+    , gear_pair_(&pair)
     , options_(options)
     , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
   {
@@ -158,6 +201,42 @@ namespace gearfem::contact
     else
       bodies[1] = build_gear_body(meshed, 2, mp[1], material[1], fe, &timer_);
     set_up_contact(std::move(bodies));
+  }
+
+  GearContactModel::GearContactModel(const geometry::InternalGearPair &pair, const mesh::GearMeshParameters &pinion_mesh,
+                                     const mesh::RingMeshParameters &ring_mesh, const fem::Elasticity material[2],
+                                     const fem::FeOptions &fe, const ContactOptions &options,
+                                     const geometry::InternalGearPair *mesh_pair)
+    : pair_(&pair)
+    , options_(options)
+    , timer_(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
+  {
+    options_.validate();
+    const geometry::InternalGearPair &meshed = mesh_pair ? *mesh_pair : pair;
+    if (pair.has_relief(1) && !(options_.micro_geometry_as_gap && mesh_pair))
+      throw InputError("Contact/Micro-geometry", "geometry",
+                       "gap (an internal pair takes the pinion's tip relief as a gap modification)");
+    check_contact_mesh(pinion_mesh);
+    std::array<GearBody, 2> bodies;
+    // The pinion: a GearPair's body builder needs only the outline, so mesh it directly.
+    {
+      mesh::MeshData m;
+      {
+        Scope scope(timer_, "mesh");
+        m = mesh::mesh_gear(meshed.pinion(), pinion_mesh);
+      }
+      Scope scope(timer_, "assemble and factorise");
+      bodies[0] = body_from_mesh(std::move(m), pinion_mesh, meshed.pinion(), material[0], fe);
+    }
+    bodies[1] = build_ring_body(meshed.ring(), ring_mesh, material[1], fe, &timer_);
+    set_up_contact(std::move(bodies));
+  }
+
+  const geometry::GearPair &GearContactModel::gear_pair() const
+  {
+    if (!gear_pair_)
+      throw InputError("Pair/Type", "internal", "external (this operation covers external pairs only)");
+    return *gear_pair_;
   }
 
   void GearContactModel::set_up_contact(std::array<GearBody, 2> bodies)
@@ -178,7 +257,7 @@ namespace gearfem::contact
     for (int i = 0; i < 2; ++i)
       {
         const bool master = options_.per_zone_slaves || i + 1 != options_.slave;
-        const bool closed = pair_->gear(i + 1).rack().closed();
+        const bool closed = pair_->closed_rack(i + 1);
         surfaces_[i] = std::make_unique<ContactSurface>(*bodies_[i], surface_ids(fine_[i], master || closed));
         for (const auto &nd : surfaces_[i]->nodes())
           {
@@ -196,7 +275,7 @@ namespace gearfem::contact
         const double c = std::cos(-P.angle), s = std::sin(-P.angle);
         const Vec2 d   = C - P.centre;
         const Vec2 x(c * d.x() - s * d.y(), s * d.x() + c * d.y());
-        const double pitch = 2 * pi / pair.gear(i).teeth();
+        const double pitch = 2 * pi / pair.teeth(i);
         tooth0_[i - 1]     = int(std::lround(std::atan2(-x.x(), x.y()) / pitch));
         sense_[i - 1]      = pair.placement(i, 1e-3).angle > P.angle ? 1.0 : -1.0;
       }
@@ -216,11 +295,11 @@ namespace gearfem::contact
   {
     for (int i = 1; i <= 2; ++i)
       {
-        const geometry::ToothProfile *tooth = &pair_->gear(i);
-        if (options_.micro_geometry_as_gap && tooth->parameters().relief.kind != geometry::TipRelief::Kind::none)
+        const geometry::MeshingPair *pair = pair_;
+        if (options_.micro_geometry_as_gap && pair->has_relief(i))
           // The relief is a function of the radius (docs/geometry.md); the body frame is
           // centred on the gear axis.
-          solver_->set_gap_modification(i, [tooth](const Vec2 &x) { return tooth->relief_at_radius(x.norm()); });
+          solver_->set_gap_modification(i, [pair, i](const Vec2 &x) { return pair->relief_at_radius(i, x.norm()); });
         else
           solver_->set_gap_modification(i, nullptr);
       }
@@ -233,7 +312,7 @@ namespace gearfem::contact
                        "gap (a model re-targeted to another micro-geometry applies it as a gap modification)");
     // The macro-geometry the bodies were meshed from: what a relief does not change.
     auto same = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(a) + std::abs(b)); };
-    const auto &old = *pair_;
+    const auto &old = gear_pair();
     std::string differs;
     if (!same(pair.center_distance(), old.center_distance()))
       differs = "centre distance";
@@ -251,7 +330,8 @@ namespace gearfem::contact
     if (!differs.empty())
       throw InputError("micro-geometry variant", differs + " differs from the meshed design",
                        "a design that differs only in tip relief (Contact/Micro-geometry = gap)");
-    pair_ = &pair;
+    pair_      = &pair;
+    gear_pair_ = &pair;
     apply_micro_geometry();
   }
 
@@ -265,7 +345,7 @@ namespace gearfem::contact
     for (int i = 1; i <= 2; ++i)
       {
         std::vector<std::vector<std::pair<unsigned int, double>>> rows;
-        const int z = pair_->gear(i).teeth();
+        const int z = pair_->teeth(i);
         std::set<int> teeth;
         for (const int t : fine_[i - 1])
           teeth.insert(((t % z) + z) % z);
@@ -347,7 +427,7 @@ namespace gearfem::contact
 
   double GearContactModel::tooth_roll(int body, int tooth, double phi1) const
   {
-    const int z1 = pair_->gear(1).teeth(), z = pair_->gear(body).teeth();
+    const int z1 = pair_->teeth(1), z = pair_->teeth(body);
     const double d = std::remainder(2 * pi * (tooth - tooth0_[body - 1]) / z, 2 * pi);
     // Tooth k stands where tooth0 stands after the body turns by d, i.e. after the pinion
     // turns by d / (sense |dtheta/dphi1|), |dtheta2/dphi1| = z1/z2.
@@ -363,15 +443,16 @@ namespace gearfem::contact
     if (psi >= phiE)
       return 1;
     // Distance along each flank from the contact point to its tip edge (involute arc
-    // length (r_tf^2 - r^2) / (2 r_b)).
+    // length, MeshingPair::flank_length_to_tip), and the flanks' radii of curvature there
+    // (the ring's concave: negative).
     const Vec2 x = pair_->path_point(psi);
     double s[2], rho[2];
     for (int i = 1; i <= 2; ++i)
       {
         const double r  = (x - pair_->placement(i, psi).centre).norm();
-        const double rb = pair_->base_radius(i), rtf = pair_->gear(i).radii().tip_form;
-        s[i - 1]        = std::max(0.0, (rtf * rtf - r * r) / (2 * rb));
-        rho[i - 1]      = std::sqrt(std::max(r * r - rb * rb, 1e-12 * rb * rb));
+        const double rb = pair_->base_radius(i);
+        s[i - 1]        = pair_->flank_length_to_tip(i, r);
+        rho[i - 1]      = std::sqrt(std::max(r * r - rb * rb, 1e-12 * rb * rb)) * (i == 2 && pair_->is_internal() ? -1 : 1);
       }
     const auto &m1 = bodies_[0]->material(), &m2 = bodies_[1]->material();
     HertzCase hc;

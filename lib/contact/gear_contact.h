@@ -1,5 +1,7 @@
 #pragma once
-// Loaded static contact of a spur pair: the two gear bodies (full gears or sectors) meshed
+// Loaded static contact of a spur pair, external (GearPair) or a pinion inside a ring
+// (InternalGearPair, whose ring body is clamped on its outer support and cut edges
+// instead of a bore): the two gear bodies (full gears or sectors) meshed
 // once in their body frames and factorised once; for each mesh position the pinion is
 // placed at roll angle phi1 and gear 2 at its unloaded conjugate angle (geometry module),
 // gear 2's bore is clamped and the pinion turns rigidly by delta_theta about its centre
@@ -10,8 +12,10 @@
 // "mesh", "assemble and factorise", "contact surfaces" (set-up) and "contact" (per position).
 #include "contact/two_body.h"
 #include "fem/elastic_body.h"
+#include "geometry/internal_pair.h"
 #include "geometry/pair.h"
 #include "mesh/gear_mesh.h"
+#include "mesh/ring_domain.h"
 
 #include <deal.II/base/timer.h>
 
@@ -64,6 +68,11 @@ namespace gearfem::contact
   GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mesh,
                            const fem::Elasticity &material, const fem::FeOptions &fe,
                            dealii::TimerOutput *timer = nullptr);
+  /// Mesh the ring of an internal pair, build, constrain (its outer support, boundary::bore,
+  /// and a sector's cut edges), assemble and factorise it.
+  GearBody build_ring_body(const geometry::InternalToothProfile &ring, const mesh::RingMeshParameters &mesh,
+                           const fem::Elasticity &material, const fem::FeOptions &fe,
+                           dealii::TimerOutput *timer = nullptr);
 
   /// The drive (tension-side) fillet of one fine tooth as observed by the flexibility cache:
   /// the samples of fem::ElasticBody::boundary_stress, rows first_row + 3 i + (xx, yy, xy).
@@ -94,6 +103,13 @@ namespace gearfem::contact
     GearContactModel(const geometry::GearPair &pair, const mesh::GearMeshParameters mesh[2],
                      const fem::Elasticity material[2], const fem::FeOptions &fe,
                      const ContactOptions &options, const geometry::GearPair *mesh_pair = nullptr);
+    /// An internal pair: the pinion meshed with `pinion_mesh`, the ring with `ring_mesh`.
+    /// A pinion tip relief needs `options.micro_geometry_as_gap` and `mesh_pair` (the pair
+    /// with the unmodified pinion, which is meshed) as above.
+    GearContactModel(const geometry::InternalGearPair &pair, const mesh::GearMeshParameters &pinion_mesh,
+                     const mesh::RingMeshParameters &ring_mesh, const fem::Elasticity material[2],
+                     const fem::FeOptions &fe, const ContactOptions &options,
+                     const geometry::InternalGearPair *mesh_pair = nullptr);
     ~GearContactModel();
 
     /// Re-target the model to `pair`, a design that differs from the current one only in
@@ -115,7 +131,10 @@ namespace gearfem::contact
     /// conjugate position at phi1, and of gear 2 at phi1.
     std::array<geometry::Placement, 2> placements(double phi1, double rotation) const;
 
-    const geometry::GearPair &pair() const { return *pair_; }
+    /// The pair's kinematics and flank facts (external or internal).
+    const geometry::MeshingPair &pair() const { return *pair_; }
+    /// The external pair (InputError for an internal pair: what needs it is external-only).
+    const geometry::GearPair &gear_pair() const;
     const fem::ElasticBody &body(int i) const { return *bodies_[i - 1]; }
     const TwoBodyContact &solver() const { return *solver_; }
     /// The solver itself, for what goes beyond a solve (observed functionals, condensing).
@@ -165,7 +184,8 @@ namespace gearfem::contact
                              const ContactSolution *warm);
     /// The tip reliefs of pair_ as gap modifications (micro_geometry_as_gap), else none.
     void apply_micro_geometry();
-    const geometry::GearPair *pair_;
+    const geometry::MeshingPair *pair_;
+    const geometry::GearPair *gear_pair_ = nullptr; ///< null for an internal pair
     std::shared_ptr<fem::ElasticBody> bodies_[2]; ///< the same body twice for identical gears
     std::unique_ptr<ContactSurface> surfaces_[2];
     std::unique_ptr<TwoBodyContact> solver_;
@@ -185,6 +205,6 @@ namespace gearfem::contact
 
   /// Pinion roll angles [rad]: `n` equally spaced over `pitches` angular pitches starting at
   /// `start` (end excluded).
-  std::vector<double> cycle_positions(const geometry::GearPair &pair, int n, double pitches,
+  std::vector<double> cycle_positions(const geometry::MeshingPair &pair, int n, double pitches,
                                       double start);
 } // namespace gearfem::contact

@@ -7,6 +7,8 @@
 #include "base/units.h"
 #include "geometry/conjugate.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -55,6 +57,30 @@ namespace gearfem::geometry
   double GearPair::base_radius(int i) const { return gear(i).radii().base; }
   double GearPair::base_pitch() const { return 2 * units::pi * base_radius(1) / g1_.teeth(); }
   double GearPair::ratio() const { return double(g2_.teeth()) / g1_.teeth(); }
+
+  double GearPair::flank_length_to_tip(int i, double r) const
+  {
+    const double rb = base_radius(i), rtf = gear(i).radii().tip_form;
+    return std::max(0.0, (rtf * rtf - r * r) / (2 * rb));
+  }
+
+  bool GearPair::beyond_tip_form(int i, double r, double tol) const { return r >= gear(i).radii().tip_form - tol; }
+
+  bool GearPair::has_relief(int i) const { return gear(i).parameters().relief.kind != TipRelief::Kind::none; }
+
+  std::array<double, 2> GearPair::radii_of_curvature(const Vec2 &x, const std::array<Placement, 2> &P) const
+  {
+    const double rb1 = base_radius(1), rb2 = base_radius(2);
+    const double r1 = (x - P[0].centre).norm(), r2 = (x - P[1].centre).norm();
+    std::array<double, 2> rho{r1 > rb1 ? std::sqrt(r1 * r1 - rb1 * rb1) : 0, r2 > rb2 ? std::sqrt(r2 * r2 - rb2 * rb2) : 0};
+    if (!involute_)
+      {
+        auto body = [&](int i) { return Eigen::Rotation2Dd(-P[i].angle) * (x - P[i].centre); };
+        const double k1 = g1_.curvature_at(body(0)), k2 = g2_.curvature_at(body(1));
+        rho = {k1 + k2 > 0 ? 1 / k1 : 0, k1 + k2 > 0 ? 1 / k2 : 0};
+      }
+    return rho;
+  }
 
   double GearPair::tip_clearance(int i) const
   {
@@ -538,8 +564,13 @@ namespace gearfem::geometry
           << ' ' << g.tip_thickness() << ' ' << p.relief.amount << ' ' << p.rack.tip_radius << ';';
       }
     s << pair.center_distance();
+    return text_fingerprint(s.str());
+  }
+
+  std::string text_fingerprint(const std::string &text)
+  {
     std::uint64_t h = 1469598103934665603ull;
-    for (const char c : s.str())
+    for (const char c : text)
       {
         h ^= static_cast<unsigned char>(c);
         h *= 1099511628211ull;

@@ -6,6 +6,7 @@
 // from T1 (tangent point on the pinion base circle) to T2; contact travels from A to E.
 // A mesh position is the pinion roll angle phi1 [rad] measured from the position where
 // pinion tooth 0 is in contact at the pitch point C (phi1 = 0 at C, < 0 at A).
+#include "geometry/meshing_pair.h"
 #include "geometry/profile.h"
 
 #include <string>
@@ -20,26 +21,7 @@ namespace gearfem::geometry
     double center_distance = 0.0;
   };
 
-  /// A point on the line of action.
-  struct LoaPoint
-  {
-    std::string name;
-    Vec2 position;      ///< pair frame [m]
-    double g;           ///< distance from T1 along the line of action [m]
-    double roll_angle;  ///< pinion position phi1 [rad] (0 at C)
-    double r1, r2;      ///< radius of this point on the pinion and on the gear [m]
-  };
-
-  /// Rigid placement of a body in the pair frame: x_pair = centre + R(angle) x_body.
-  struct Placement
-  {
-    Vec2 centre;
-    double angle;
-    Vec2 apply(const Vec2 &x_body) const;
-    Vec2 apply_vector(const Vec2 &v_body) const;
-  };
-
-  class GearPair
+  class GearPair : public MeshingPair
   {
   public:
     /// Throws InputError for impossible centre distances, contact ratio < 1, tip-to-fillet
@@ -47,24 +29,24 @@ namespace gearfem::geometry
     GearPair(ToothProfile gear1, ToothProfile gear2, const PairParameters &pair);
 
     const ToothProfile &gear(int i) const { return i == 1 ? g1_ : g2_; }
-    double center_distance() const { return a_; }
-    double working_pressure_angle() const { return alpha_w_; }
-    double working_pitch_radius(int i) const { return i == 1 ? rw1_ : rw2_; }
-    double base_radius(int i) const;
-    double base_pitch() const;
-    double ratio() const; ///< z2 / z1
+    double center_distance() const override { return a_; }
+    double working_pressure_angle() const override { return alpha_w_; }
+    double working_pitch_radius(int i) const override { return i == 1 ? rw1_ : rw2_; }
+    double base_radius(int i) const override;
+    double base_pitch() const override;
+    double ratio() const override; ///< z2 / z1
 
     /// T1, T2, A, B (LPSTC), C (pitch), D (HPSTC), E, in that order.
-    const std::vector<LoaPoint> &line_of_action() const { return loa_; }
-    const LoaPoint &point(const std::string &name) const;
-    double contact_ratio() const { return eps_alpha_; }
+    const std::vector<LoaPoint> &line_of_action() const override { return loa_; }
+    const LoaPoint &point(const std::string &name) const override;
+    double contact_ratio() const override { return eps_alpha_; }
     double normal_backlash() const { return jn_; }          ///< [m]
     double circumferential_backlash() const { return jt_; } ///< on the working pitch circle [m]
     double tip_clearance(int i) const;                      ///< gear i's tip to the mate's root [m]
 
     /// Rigid placement of gear i in the pair frame at pinion position phi1 (gear 2 at its
     /// unloaded conjugate angle: drive flanks touching, no load).
-    Placement placement(int i, double phi1) const;
+    Placement placement(int i, double phi1) const override;
     /// Gear 2 rotation angle for pinion position phi1. Closed form for involute pairs;
     /// gap-closing search on the exact outlines for any other pair.
     double conjugate_angle(double phi1) const;
@@ -79,13 +61,27 @@ namespace gearfem::geometry
     Vec2 contact_point(double phi1) const;
     /// Point of the path of contact at pinion position phi1 for the tooth pair that is at C
     /// when phi1 = 0 (no reduction to the pair nearest C; phi1 within [A, E]) [m].
-    Vec2 path_point(double phi1) const;
+    Vec2 path_point(double phi1) const override;
     /// Equivalent curvature along the whole path of contact (same pair as path_point) [1/m].
     double path_curvature(double phi1) const;
     /// True when both gears are involutes (standard racks): closed-form kinematics apply.
-    bool is_involute() const { return involute_; }
+    bool is_involute() const override { return involute_; }
     /// Zero-backlash centre distance for these tooth thicknesses [m].
     double zero_backlash_center_distance() const { return a0_; }
+
+    // MeshingPair: the gear-by-gear facts of the two external gears.
+    int teeth(int i) const override { return gear(i).teeth(); }
+    double module() const override { return g1_.parameters().rack.module; }
+    double face_width(int i) const override { return gear(i).parameters().face_width; }
+    bool closed_rack(int i) const override { return gear(i).rack().closed(); }
+    /// The involute arc (r_tf^2 - r^2)/(2 r_b) (every flank: the contact model's reach test).
+    double flank_length_to_tip(int i, double r) const override;
+    bool beyond_tip_form(int i, double r, double tol) const override;
+    /// Involutes: sqrt(r^2 - r_b^2); other profiles: the outlines' curvature (0, 0 when the
+    /// pair's relative curvature is not positive).
+    std::array<double, 2> radii_of_curvature(const Vec2 &x, const std::array<Placement, 2> &P) const override;
+    double relief_at_radius(int i, double r) const override { return gear(i).relief_at_radius(r); }
+    bool has_relief(int i) const override;
 
     const std::vector<std::string> &warnings() const { return warnings_; }
 
@@ -126,6 +122,8 @@ namespace gearfem::geometry
   /// (12 significant digits). Result files carry it so that tables are never applied to a
   /// different geometry.
   std::string geometry_fingerprint(const GearPair &pair);
+  /// FNV-1a (64 bit) of a text, as a hex string (the fingerprints' hash).
+  std::string text_fingerprint(const std::string &text);
 
   /// Siasos 2010: minimum number of teeth free of undercut,
   /// Z_min = 2[(h_fP* - x) - rho_fP*(1 - sin a)] / sin^2 a.

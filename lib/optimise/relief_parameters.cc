@@ -159,6 +159,7 @@ namespace gearfem::optimise
     s.optimiser = read_optimiser(prm);
     s.geometry  = geometry::parse_geometry_parameters(prm);
     auto input  = std::make_shared<solve::GearContactInput>(solve::parse_gear_contact_input(prm));
+    input->require_external("the tip-relief optimiser");
     const auto &sv = input->solve;
     if (sv.positions != solve::SolveParameters::Positions::cycle)
       throw InputError("Solve/Positions", sv.positions == solve::SolveParameters::Positions::named ? "named" : "list",

@@ -19,7 +19,7 @@ namespace gearfem::post
     using geometry::Vec2;
 
     /// The contact point touches a tip edge (corner, tip rounding or tip land) of either gear.
-    bool at_tip_edge(const geometry::GearPair &pair, const ContactPoint &p,
+    bool at_tip_edge(const geometry::MeshingPair &pair, const ContactPoint &p,
                      const std::array<geometry::Placement, 2> &P, double band)
     {
       namespace bd = mesh::boundary;
@@ -30,12 +30,12 @@ namespace gearfem::post
       // rounding) lies on the tip-form circle; test both the slave node and the master point.
       const int S = p.slave_body, M = 3 - S;
       const double rs = (p.x - P[S - 1].centre).norm(), rm = (p.master_point - P[M - 1].centre).norm();
-      const double tol = band * pair.gear(1).parameters().rack.module;
-      return rs >= pair.gear(S).radii().tip_form - tol || rm >= pair.gear(M).radii().tip_form - tol;
+      const double tol = band * pair.module();
+      return pair.beyond_tip_form(S, rs, tol) || pair.beyond_tip_form(M, rm, tol);
     }
 
     /// Peak pressure, profile, ellipse fit and Hertz comparison of one loaded pair.
-    void pressure_and_hertz(const geometry::GearPair &pair, const fem::Elasticity material[2], ToothPairResult &tp,
+    void pressure_and_hertz(const geometry::MeshingPair &pair, const fem::Elasticity material[2], ToothPairResult &tp,
                             const ContactSolution &sol, const std::array<geometry::Placement, 2> &P,
                             int min_patch_nodes)
     {
@@ -64,19 +64,12 @@ namespace gearfem::post
       tp.resolved    = tp.active_nodes >= min_patch_nodes && fit[0] > 0;
       tp.half_width  = tp.resolved ? fit[0] : 0.0;
       // Hertz on the local radii of curvature at the peak: the involute's sqrt(r^2 - r_b^2),
-      // or for other profiles (B-spline flanks, closed racks) the curvature of the outline
-      // itself (a hollow flank has a negative one; the sum must be positive).
-      const double rb1 = pair.base_radius(1), rb2 = pair.base_radius(2);
-      tp.radius_pinion  = (peak->x - P[0].centre).norm();
-      tp.radius_gear    = (peak->x - P[1].centre).norm();
-      double rho1 = tp.radius_pinion > rb1 ? std::sqrt(tp.radius_pinion * tp.radius_pinion - rb1 * rb1) : 0;
-      double rho2 = tp.radius_gear > rb2 ? std::sqrt(tp.radius_gear * tp.radius_gear - rb2 * rb2) : 0;
-      if (!pair.is_involute())
-        {
-          auto body = [&](int i) { return Eigen::Rotation2Dd(-P[i].angle) * (peak->x - P[i].centre); };
-          const double k1 = pair.gear(1).curvature_at(body(0)), k2 = pair.gear(2).curvature_at(body(1));
-          rho1 = k1 + k2 > 0 ? 1 / k1 : 0, rho2 = k1 + k2 > 0 ? 1 / k2 : 0;
-        }
+      // negative for an internal gear's concave flank, or for other profiles (B-spline
+      // flanks, closed racks) the curvature of the outline itself (a hollow flank has a
+      // negative one; the sum must be positive).
+      tp.radius_pinion      = (peak->x - P[0].centre).norm();
+      tp.radius_gear        = (peak->x - P[1].centre).norm();
+      const auto [rho1, rho2] = pair.radii_of_curvature(peak->x, P);
       if (rho1 != 0 && rho2 != 0)
         {
           const auto &mat1 = material[0], &mat2 = material[1];
@@ -92,7 +85,7 @@ namespace gearfem::post
     }
 
     /// The loaded tooth pairs (by pinion tooth) with their forces, node counts and edge flags.
-    std::map<int, ToothPairResult> load_sharing(const geometry::GearPair &pair, const ContactSolution &sol,
+    std::map<int, ToothPairResult> load_sharing(const geometry::MeshingPair &pair, const ContactSolution &sol,
                                                 const std::array<geometry::Placement, 2> &P, double band)
     {
       std::map<int, ToothPairResult> pairs;
@@ -125,7 +118,7 @@ namespace gearfem::post
     /// Peak tension-side (drive) fillet stress of the loaded teeth of pair `tp`.
     void root_stress(const contact::GearContactModel &model, const dealii::Vector<double> u[2], ToothPairResult &tp)
     {
-      const int zp = model.pair().gear(1).teeth(), zg = model.pair().gear(2).teeth();
+      const int zp = model.pair().teeth(1), zg = model.pair().teeth(2);
       const int kp = ((tp.pinion_tooth % zp) + zp) % zp, kg = ((tp.gear_tooth % zg) + zg) % zg;
       namespace b    = mesh::boundary;
       const auto pk1 = model.body(1).peak_principal_stress(u[0], b::tooth_id(kp, b::fillet_drive));
@@ -147,7 +140,7 @@ namespace gearfem::post
     require_range("Post/Tip edge band", o.tip_edge_band, 0.0, 0.5, "m_n");
   }
 
-  PositionResult evaluate_contact(const geometry::GearPair &pair, const fem::Elasticity material[2],
+  PositionResult evaluate_contact(const geometry::MeshingPair &pair, const fem::Elasticity material[2],
                                   const contact::ContactState &state, const std::array<geometry::Placement, 2> &P,
                                   const PostOptions &options,
                                   const std::function<void(ToothPairResult &)> &root_stress)
@@ -224,7 +217,7 @@ namespace gearfem::post
       const auto &sol = state.solution;
       const Eigen::VectorXd s[2] = {model.solver().observed_response(1, sol.forces[0]),
                                     model.solver().observed_response(2, sol.forces[1])};
-      const int z[2] = {model.pair().gear(1).teeth(), model.pair().gear(2).teeth()};
+      const int z[2] = {model.pair().teeth(1), model.pair().teeth(2)};
       const fem::Elasticity material[2] = {model.body(1).material(), model.body(2).material()};
       PositionResult r = evaluate_contact(model.pair(), material, state, model.placements(state.phi1, sol.q), options,
                                           [&](ToothPairResult &tp) {

@@ -104,7 +104,7 @@ namespace gearfem::post
   /// and Hertz, edge flags, n_pairs and the peak pressures of state `s` with the rigid
   /// placements `P` (GearContactModel::placements at its rotation). `root_stress` (may be
   /// empty) fills the root stresses of each loaded pair; the equilibrium moments are left 0.
-  PositionResult evaluate_contact(const geometry::GearPair &pair, const fem::Elasticity material[2],
+  PositionResult evaluate_contact(const geometry::MeshingPair &pair, const fem::Elasticity material[2],
                                   const contact::ContactState &s, const std::array<geometry::Placement, 2> &P,
                                   const PostOptions &options,
                                   const std::function<void(ToothPairResult &)> &root_stress);

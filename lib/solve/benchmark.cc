@@ -95,6 +95,7 @@ namespace gearfem::solve
     post::declare_post_parameters(prm);
     prm.parse_input(prm_file.string(), "", true, true); // other commands' sections are ignored
     solve::GearContactInput in = solve::parse_gear_contact_input(prm);
+    in.require_external("gearfem bench solve");
     PostOptions post_options = post::parse_post_parameters(prm);
     post_options.pinion_speed = in.friction.pinion_speed;
     const auto positions = in.positions();

@@ -185,6 +185,7 @@ namespace gearfem::solve
   ErrorEstimate estimate_error(contact::GearContactModel &model, const solve::GearContactInput &in,
                                const ErrorEstimateOptions &options)
   {
+    in.require_external("Solve/Error estimate");
     const auto t0 = Clock::now();
     mesh::GearMeshParameters mesh[2];
     for (int i = 0; i < 2; ++i)

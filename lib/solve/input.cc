@@ -119,15 +119,17 @@ namespace gearfem::solve
 
   namespace
   {
-  void check_small_strain(const geometry::GearPair &pair, const geometry::PairMaterial &pm,
+  void check_small_strain(const geometry::MeshingPair &pair, const geometry::PairMaterial &pm,
                           const std::vector<double> &torques)
   {
     // geometry::limits::check_small_strain: p0/E* <= 5 % at the pitch point, E' of the plane model.
     const double E1 = pm.gear1.effective_modulus(pm.plane_strain);
     const double E2 = pm.gear2.effective_modulus(pm.plane_strain);
     const double Es = 1.0 / (1.0 / E1 + 1.0 / E2);
-    const double b  = std::min(pair.gear(1).parameters().face_width, pair.gear(2).parameters().face_width);
-    const double curvature = pair.equivalent_curvature(0.0); // 1/R* at C [1/m]
+    const double b  = std::min(pair.face_width(1), pair.face_width(2));
+    const auto *external   = dynamic_cast<const geometry::GearPair *>(&pair);
+    const auto rho         = pair.radii_of_curvature(pair.point("C").position, {pair.placement(1, 0), pair.placement(2, 0)});
+    const double curvature = external ? external->equivalent_curvature(0.0) : 1 / rho[0] + 1 / rho[1]; // 1/R* at C [1/m]
     for (const double T : torques)
       geometry::limits::check_small_strain("Solve/Torques", T, pair.base_radius(1), b, Es, curvature);
   }
@@ -159,6 +161,7 @@ namespace gearfem::solve
     fem::declare_fe_parameters(prm);
     contact::declare_contact_parameters(prm);
     declare_solve_parameters(prm);
+    declare_ring_parameters(prm);
   }
 
   GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm)
@@ -166,28 +169,57 @@ namespace gearfem::solve
     GearContactInput in;
     const auto gi = geometry::parse_geometry_parameters(prm);
     const auto pm = geometry::parse_material_parameters(prm);
-    in.pair       = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
     for (int i = 0; i < 2; ++i)
-      {
-        in.mesh[i]     = mesh::parse_mesh_parameters(prm, i + 1);
-        contact::check_contact_mesh(in.mesh[i]);
-        in.material[i] = fem::elasticity(i == 0 ? pm.gear1 : pm.gear2,
-                                         in.pair->gear(i + 1).parameters().face_width, pm.plane_strain);
-        (void)mesh::gear_domain(in.pair->gear(i + 1), in.mesh[i]); // outline checks, no gmsh
-      }
+      in.mesh[i] = mesh::parse_mesh_parameters(prm, i + 1);
     in.fe      = fem::parse_fe_parameters(prm);
-    in.contact = contact::parse_contact_parameters(prm, in.material[0].youngs_modulus, in.material[1].youngs_modulus);
-    in.friction = parse_friction_law(prm);
     using Relief = geometry::TipRelief::Kind;
-    if (in.contact.micro_geometry_as_gap && (gi.gear1.relief.kind != Relief::none || gi.gear2.relief.kind != Relief::none))
+    if (internal_pair_requested(prm))
       {
-        geometry::GeometryInput plain = gi;
-        plain.gear1.relief = plain.gear2.relief = geometry::TipRelief();
-        in.unmodified_pair = std::make_unique<geometry::GearPair>(geometry::build_pair(plain));
+        const RingInput ring = parse_ring_parameters(prm, gi.gear2, in.mesh[1]);
+        in.ring_mesh         = ring.mesh;
+        const auto ring_profile = geometry::InternalToothProfile::generate(ring.gear);
+        auto make = [&](const geometry::GearParameters &pinion) {
+          return std::make_unique<geometry::InternalGearPair>(geometry::ToothProfile::generate(pinion), ring_profile,
+                                                              gi.pair.center_distance, ring.face_width);
+        };
+        in.internal_pair = make(gi.gear1);
+        contact::check_contact_mesh(in.mesh[0]);
+        (void)mesh::gear_domain(in.internal_pair->pinion(), in.mesh[0]);
+        (void)mesh::ring_domain(ring_profile, in.ring_mesh);
+        in.contact = contact::parse_contact_parameters(prm, pm.gear1.youngs_modulus, pm.gear2.youngs_modulus);
+        if (gi.gear1.relief.kind != Relief::none)
+          {
+            if (!in.contact.micro_geometry_as_gap)
+              throw InputError("Contact/Micro-geometry", "geometry",
+                               "gap (Pair/Type = internal takes the pinion's tip relief as a gap)");
+            geometry::GearParameters plain = gi.gear1;
+            plain.relief                   = geometry::TipRelief();
+            in.unmodified_internal_pair    = make(plain);
+          }
       }
+    else
+      {
+        in.pair = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
+        for (int i = 0; i < 2; ++i)
+          {
+            contact::check_contact_mesh(in.mesh[i]);
+            (void)mesh::gear_domain(in.pair->gear(i + 1), in.mesh[i]); // outline checks, no gmsh
+          }
+        in.contact = contact::parse_contact_parameters(prm, pm.gear1.youngs_modulus, pm.gear2.youngs_modulus);
+        if (in.contact.micro_geometry_as_gap &&
+            (gi.gear1.relief.kind != Relief::none || gi.gear2.relief.kind != Relief::none))
+          {
+            geometry::GeometryInput plain = gi;
+            plain.gear1.relief = plain.gear2.relief = geometry::TipRelief();
+            in.unmodified_pair = std::make_unique<geometry::GearPair>(geometry::build_pair(plain));
+          }
+      }
+    for (int i = 0; i < 2; ++i)
+      in.material[i] = fem::elasticity(i == 0 ? pm.gear1 : pm.gear2, in.meshing().face_width(i + 1), pm.plane_strain);
+    in.friction = parse_friction_law(prm);
     in.solve   = parse_solve_parameters(prm);
     (void)in.positions(); // checks the position list
-    check_small_strain(*in.pair, pm, in.solve.torques);
+    check_small_strain(in.meshing(), pm, in.solve.torques);
     in.contact.friction = in.friction_coefficients(in.solve.torques).front();
     return in;
   }
@@ -195,6 +227,8 @@ namespace gearfem::solve
   std::vector<std::string> input_warnings(const GearContactInput &in)
   {
     std::vector<std::string> w;
+    if (!in.pair)
+      return w; // the flank-height rule is stated for external pairs
     const auto &pair = *in.pair;
     for (int i = 1; i <= 2; ++i)
       {
@@ -220,7 +254,8 @@ namespace gearfem::solve
   std::vector<std::pair<std::string, double>> GearContactInput::positions() const
   {
     std::vector<std::pair<std::string, double>> out;
-    const auto &s = solve;
+    const auto &s    = solve;
+    const auto *pair = &meshing();
     switch (s.positions)
       {
         case SolveParameters::Positions::cycle:
@@ -248,8 +283,24 @@ namespace gearfem::solve
     return out;
   }
 
+  const geometry::MeshingPair &GearContactInput::meshing() const
+  {
+    if (internal_pair)
+      return *internal_pair;
+    return *pair;
+  }
+
+  void GearContactInput::require_external(const std::string &what) const
+  {
+    if (internal_pair)
+      throw InputError("Pair/Type", "internal", "external (" + what + " covers external pairs only)");
+  }
+
   std::unique_ptr<contact::GearContactModel> GearContactInput::model() const
   {
+    if (internal_pair)
+      return std::make_unique<contact::GearContactModel>(*internal_pair, mesh[0], ring_mesh, material, fe, contact,
+                                                         unmodified_internal_pair.get());
     return std::make_unique<contact::GearContactModel>(*pair, mesh, material, fe, contact, unmodified_pair.get());
   }
 
@@ -257,14 +308,26 @@ namespace gearfem::solve
   {
     std::ostringstream s;
     s.precision(17);
-    const geometry::GearPair &meshed = in.unmodified_pair ? *in.unmodified_pair : *in.pair;
+    const geometry::MeshingPair &meshed = in.internal_pair ?
+      static_cast<const geometry::MeshingPair &>(in.unmodified_internal_pair ? *in.unmodified_internal_pair :
+                                                                                *in.internal_pair) :
+      (in.unmodified_pair ? *in.unmodified_pair : *in.pair);
     s << "pair " << meshed.center_distance() << '\n';
     for (int i = 1; i <= 2; ++i)
       {
-        const auto &g = meshed.gear(i);
-        s << "gear " << i << ' ' << g.teeth() << ' ' << g.parameters().face_width << '\n';
-        for (const auto &q : g.sample(g.parameters().rack.module / 50))
+        s << "gear " << i << ' ' << meshed.teeth(i) << ' ' << meshed.face_width(i) << '\n';
+        const auto *ip = dynamic_cast<const geometry::InternalGearPair *>(&meshed);
+        const auto samples =
+          !ip ? static_cast<const geometry::GearPair &>(meshed).gear(i).sample(meshed.module() / 50) :
+          i == 1 ? ip->pinion().sample(meshed.module() / 50) : ip->ring().sample(meshed.module() / 50);
+        for (const auto &q : samples)
           s << q.p.x() << ' ' << q.p.y() << '\n';
+        if (ip && i == 2)
+          {
+            const auto &r = in.ring_mesh;
+            s << "ring " << r.rim_thickness << ' ' << r.backup_ratio << ' ' << r.bolts << ' ' << r.bolt_phase << ' '
+              << r.bolt_width << '\n';
+          }
         const auto &m = in.mesh[i - 1];
         s << "mesh " << static_cast<int>(m.model) << ' ' << m.sector_teeth << ' ' << m.h_contact << ' ' << m.h_fillet
           << ' ' << m.h_coast << ' ' << m.h_corner << ' ' << m.h_body << ' ' << m.h_tooth << ' ' << m.growth << ' '
@@ -303,7 +366,7 @@ namespace gearfem::solve
     std::vector<double> mu;
     for (const double T : torques)
       mu.push_back(analytical::friction::coefficient(
-        friction, analytical::friction::pitch_point(*pair, T, friction.pinion_speed, b)));
+        friction, analytical::friction::pitch_point(meshing(), T, friction.pinion_speed, b)));
     return mu;
   }
 } // namespace gearfem::solve

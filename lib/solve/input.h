@@ -9,6 +9,7 @@
 #include "fem/elastic_body.h"
 #include "geometry/pair.h"
 #include "mesh/gear_mesh.h"
+#include "solve/ring_input.h"
 
 #include <memory>
 #include <string>
@@ -61,6 +62,11 @@ namespace gearfem::solve
     /// `Contact/Micro-geometry = gap` with a tip relief: the gears without relief, which are
     /// meshed (null otherwise: `pair` is meshed).
     std::unique_ptr<geometry::GearPair> unmodified_pair;
+    /// `Pair/Type = internal`: the pinion and its ring (then `pair` and `unmodified_pair` are
+    /// null), the ring's unmodified twin when the pinion's tip relief is a gap, and the
+    /// ring's mesh (mesh[1] holds the sizes it was made from).
+    std::unique_ptr<geometry::InternalGearPair> internal_pair, unmodified_internal_pair;
+    mesh::RingMeshParameters ring_mesh;
     mesh::GearMeshParameters mesh[2];
     fem::Elasticity material[2];
     fem::FeOptions fe;
@@ -74,6 +80,11 @@ namespace gearfem::solve
     /// The positions of the `Solve` section: (name, roll angle [rad]).
     std::vector<std::pair<std::string, double>> positions() const;
     std::unique_ptr<contact::GearContactModel> model() const;
+    /// The pair, external or internal.
+    const geometry::MeshingPair &meshing() const;
+    /// InputError naming `Pair/Type` when the pair is internal and `what` (a command or an
+    /// option) covers external pairs only.
+    void require_external(const std::string &what) const;
   };
   /// The key of the FE model an input builds: equal keys mean the same meshed geometry
   /// (the outline of each meshed gear, sampled at 1/50 module, its tooth count, face width

@@ -54,7 +54,7 @@ namespace gearfem::solve
         }
       for (const char *n : {"B", "C", "D"})
         {
-          const double phi = in.pair->point(n).roll_angle;
+          const double phi = in.meshing().point(n).roll_angle;
           std::size_t best = 0;
           for (std::size_t i = 1; i < positions.size(); ++i)
             if (std::abs(positions[i].second - phi) < std::abs(positions[best].second - phi))
@@ -254,10 +254,11 @@ namespace gearfem::solve
   io::SolveResults start_results(const solve::GearContactInput &in, const std::string &input_name,
                                  const std::string &program)
   {
-    const auto &pair = *in.pair;
+    const auto &pair = in.meshing();
     io::SolveResults t = io::make_solve_results();
     t.attributes       = {{"program", program},
-                          {"geometry_hash", geometry::geometry_fingerprint(pair)},
+                          {"geometry_hash", in.internal_pair ? geometry::geometry_fingerprint(*in.internal_pair) :
+                                                               geometry::geometry_fingerprint(*in.pair)},
                           {"method", contact::to_string(in.contact.method)},
                           {"input", input_name}};
     for (const char *n : {"A", "B", "C", "D", "E"})
@@ -274,7 +275,7 @@ namespace gearfem::solve
     // Root stresses and reactions from influence coefficients (fields only for VTU).
     model.observe_root_stress();
     const double contact_before = contact::section_seconds(model.timer(), "contact");
-    const auto &pair = *in.pair;
+    const auto &pair = in.meshing();
     loading::SweepPlan plan;
     plan.positions = in.positions();
     plan.torques   = in.solve.torques;
@@ -293,7 +294,7 @@ namespace gearfem::solve
         run.friction = plan.friction;
       }
 
-    const double z_ratio    = double(pair.gear(2).teeth()) / pair.gear(1).teeth();
+    const double z_ratio    = pair.ratio();
     const double face_width = std::min(in.material[0].thickness, in.material[1].thickness);
     TablesObserver tables(t, z_ratio, face_width);
     VtuObserver vtu(model, in.solve, named_vtu_positions(in, plan.positions), options.output_dir);
@@ -342,7 +343,7 @@ namespace gearfem::solve
     return run;
   }
 
-  std::string friction_table(const SolveRunResult &run, const geometry::GearPair &pair,
+  std::string friction_table(const SolveRunResult &run, const geometry::MeshingPair &pair,
                              const std::vector<double> &torques)
   {
     const auto &sw   = run.results.sweep;
@@ -356,7 +357,9 @@ namespace gearfem::solve
     std::ostringstream out;
     out << "\n| T1 [N m] | mu [-] | mean friction force [N] | mean mesh power loss [W] | efficiency from the loss | "
            "efficiency from the torques | mu* [-]: P_loss = P_in mu* H_V (Ohlendorf) |\n|---|---|---|---|---|---|---|\n";
-    const double hv = analytical::friction::ohlendorf_hv(pair);
+    // Ohlendorf's H_V is stated for external pairs.
+    const auto *external = dynamic_cast<const geometry::GearPair *>(&pair);
+    const double hv      = external ? analytical::friction::ohlendorf_hv(*external) : 0.0;
     for (std::size_t ti = 0; ti < torques.size(); ++ti)
       {
         const double T = torques[ti];
@@ -372,30 +375,38 @@ namespace gearfem::solve
         const double eta_loss = 1.0 - p_loss / (p_in * w1), eta_torque = p_out / p_in;
         out << std::setprecision(5) << "| " << T << " | " << (ti < run.friction.size() ? run.friction[ti] : 0.0)
             << " | " << f / n << " | " << p_loss / n << " | " << eta_loss << " | "
-            << eta_torque << " | " << (1.0 - eta_loss) / hv << " |\n";
+            << eta_torque << " | ";
+        if (hv > 0)
+          out << (1.0 - eta_loss) / hv << " |\n";
+        else
+          out << "n/a (internal pair) |\n";
       }
     return out.str();
   }
 
-  std::string summary_table(const SolveRunResult &run, const geometry::GearPair &pair,
+  std::string summary_table(const SolveRunResult &run, const geometry::MeshingPair &meshing,
                             const std::vector<double> &torques)
   {
-    // ISO 6336-1 c_gamma_alpha b for comparison.
-    analytical::iso6336::StiffnessInput si;
-    si.z1 = pair.gear(1).teeth(), si.z2 = pair.gear(2).teeth();
-    si.x1 = pair.gear(1).parameters().profile_shift, si.x2 = pair.gear(2).parameters().profile_shift;
-    si.alpha_n   = pair.gear(1).parameters().rack.pressure_angle;
-    si.module    = pair.gear(1).parameters().rack.module;
-    si.h_fP1     = pair.gear(1).parameters().rack.dedendum;
-    si.h_fP2     = pair.gear(2).parameters().rack.dedendum;
-    si.eps_alpha = pair.contact_ratio();
+    // ISO 6336-1 c_gamma_alpha b for comparison (external pairs; 0: not given).
     double c_gamma = 0;
-    try
+    if (const auto *external = dynamic_cast<const geometry::GearPair *>(&meshing))
       {
-        c_gamma = analytical::iso6336::mesh_stiffness(si).c_gamma_alpha;
+        const auto &pair = *external;
+        analytical::iso6336::StiffnessInput si;
+        si.z1 = pair.gear(1).teeth(), si.z2 = pair.gear(2).teeth();
+        si.x1 = pair.gear(1).parameters().profile_shift, si.x2 = pair.gear(2).parameters().profile_shift;
+        si.alpha_n   = pair.gear(1).parameters().rack.pressure_angle;
+        si.module    = pair.gear(1).parameters().rack.module;
+        si.h_fP1     = pair.gear(1).parameters().rack.dedendum;
+        si.h_fP2     = pair.gear(2).parameters().rack.dedendum;
+        si.eps_alpha = pair.contact_ratio();
+        try
+          {
+            c_gamma = analytical::iso6336::mesh_stiffness(si).c_gamma_alpha;
+          }
+        catch (const InputError &)
+          {}
       }
-    catch (const InputError &)
-      {}
     std::ostringstream out;
     out << "| T1 [N m] | mean STE [um] | STE p-p [um] | mean k_secant [N/(mm um)] | ISO 6336-1 "
            "c_gamma_alpha [N/(mm um)] | ratio | max p [MPa] | max root stress pinion/gear [MPa] | "
@@ -417,11 +428,15 @@ namespace gearfem::solve
         if (n == 0)
           continue;
         const auto u = run.unresolved.find(T);
-        out << std::setprecision(4) << "| " << T << " | " << sum / n << " | " << hi - lo << " | " << ks / n << " | "
-            << c_gamma << " | " << (c_gamma > 0 ? ks / n / c_gamma : 0.0) << " | " << pm << " | " << s1 << " / "
+        out << std::setprecision(4) << "| " << T << " | " << sum / n << " | " << hi - lo << " | " << ks / n << " | ";
+        if (c_gamma > 0)
+          out << c_gamma << " | " << ks / n / c_gamma;
+        else
+          out << "n/a | n/a"; // ISO 6336-1 c_gamma_alpha is stated for external pairs
+        out << " | " << pm << " | " << s1 << " / "
             << s2 << " | " << (u == run.unresolved.end() ? 0 : u->second) << " |\n";
       }
-    out << friction_table(run, pair, torques);
+    out << friction_table(run, meshing, torques);
     return out.str();
   }
 } // namespace gearfem::solve

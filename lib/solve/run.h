@@ -69,12 +69,12 @@ namespace gearfem::solve
 
   /// Markdown summary per torque: mean STE, its peak-to-peak, mean k_secant against ISO
   /// 6336-1 c_gamma_alpha, peak pressure and root stresses, unresolved pair-positions.
-  std::string summary_table(const SolveRunResult &run, const geometry::GearPair &pair,
+  std::string summary_table(const SolveRunResult &run, const geometry::MeshingPair &pair,
                             const std::vector<double> &torques);
   /// With friction: per torque, the mean friction force and mesh power loss over the
   /// positions, the mesh efficiency from the loss (1 - P_loss/P_in) and from the torques
   /// (T2 w2 / T1 w1), and the coefficient mu* with P_loss = P_in mu* H_V (Ohlendorf's H_V:
   /// mu* equals mu where the idealised load sharing holds). Empty when frictionless.
-  std::string friction_table(const SolveRunResult &run, const geometry::GearPair &pair,
+  std::string friction_table(const SolveRunResult &run, const geometry::MeshingPair &pair,
                              const std::vector<double> &torques);
 } // namespace gearfem::solve
