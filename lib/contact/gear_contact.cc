@@ -96,6 +96,16 @@ namespace gearfem::contact
 
   namespace
   {
+    /// f() timed in section `name` of `timer` (untimed when null).
+    template <class F>
+    auto in_section(dealii::TimerOutput *timer, const char *name, F &&f)
+    {
+      std::optional<Scope> scope;
+      if (timer)
+        scope.emplace(*timer, name);
+      return f();
+    }
+
     /// The factorised body of an external gear meshed as `m` (bore and cut edges clamped).
     GearBody body_from_mesh(mesh::MeshData m, const mesh::GearMeshParameters &mp, const geometry::ToothProfile &tooth,
                             const fem::Elasticity &material, const fem::FeOptions &fe)
@@ -126,34 +136,18 @@ namespace gearfem::contact
   GearBody build_gear_body(const geometry::GearPair &pair, int i, const mesh::GearMeshParameters &mp,
                            const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
   {
-    using Optional = std::optional<Scope>;
     check_contact_mesh(mp);
     const auto &tooth = pair.gear(i);
-    mesh::MeshData m;
-    {
-      Optional scope;
-      if (timer)
-        scope.emplace(*timer, "mesh");
-      m = mesh::mesh_gear(tooth, mp);
-    }
-    Optional scope;
-    if (timer)
-      scope.emplace(*timer, "assemble and factorise");
-    return body_from_mesh(std::move(m), mp, tooth, material, fe);
+    auto m = in_section(timer, "mesh", [&] { return mesh::mesh_gear(tooth, mp); });
+    return in_section(timer, "assemble and factorise",
+                      [&] { return body_from_mesh(std::move(m), mp, tooth, material, fe); });
   }
 
   GearBody build_ring_body(const geometry::InternalToothProfile &ring, const mesh::RingMeshParameters &mp,
                            const fem::Elasticity &material, const fem::FeOptions &fe, dealii::TimerOutput *timer)
   {
-    using Optional = std::optional<Scope>;
-    mesh::MeshData m;
-    {
-      Optional scope;
-      if (timer)
-        scope.emplace(*timer, "mesh");
-      m = mesh::mesh_ring(ring, mp);
-    }
-    Optional scope;
+    auto m = in_section(timer, "mesh", [&] { return mesh::mesh_ring(ring, mp); });
+    std::optional<Scope> scope;
     if (timer)
       scope.emplace(*timer, "assemble and factorise");
     fem::FeOptions fo = fe;
@@ -218,16 +212,9 @@ namespace gearfem::contact
                        "gap (an internal pair takes the pinion's tip relief as a gap modification)");
     check_contact_mesh(pinion_mesh);
     std::array<GearBody, 2> bodies;
-    // The pinion: a GearPair's body builder needs only the outline, so mesh it directly.
-    {
-      mesh::MeshData m;
-      {
-        Scope scope(timer_, "mesh");
-        m = mesh::mesh_gear(meshed.pinion(), pinion_mesh);
-      }
-      Scope scope(timer_, "assemble and factorise");
-      bodies[0] = body_from_mesh(std::move(m), pinion_mesh, meshed.pinion(), material[0], fe);
-    }
+    auto m    = in_section(&timer_, "mesh", [&] { return mesh::mesh_gear(meshed.pinion(), pinion_mesh); });
+    bodies[0] = in_section(&timer_, "assemble and factorise",
+                           [&] { return body_from_mesh(std::move(m), pinion_mesh, meshed.pinion(), material[0], fe); });
     bodies[1] = build_ring_body(meshed.ring(), ring_mesh, material[1], fe, &timer_);
     set_up_contact(std::move(bodies));
   }
