@@ -9,11 +9,15 @@
 #include "geometry/parameters.h"
 #include "mesh/parameters.h"
 #include "mesh/triangulation.h"
+#include "geometry/internal_pair.h"
+#include "solve/ring_input.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <iomanip>
+#include <memory>
 #include <unistd.h>
 
 namespace gearfem::commands
@@ -26,16 +30,81 @@ namespace gearfem::commands
       geometry::declare_material_parameters(prm);
       mesh::declare_mesh_parameters(prm);
       fem::declare_fe_parameters(prm);
+      solve::declare_ring_parameters(prm);
     }
 
-    /// Zoom box around tooth 0 in mm: xmin,xmax,ymin,ymax.
+    /// Zoom box around tooth 0 in mm: xmin,xmax,ymin,ymax (half width p, radii lo..hi [m]).
+    std::string zoom_box(double p, double lo, double hi)
+    {
+      std::ostringstream s;
+      s << 1e3 * -1.6 * p << "," << 1e3 * 1.6 * p << "," << 1e3 * lo << "," << 1e3 * hi;
+      return s.str();
+    }
     std::string zoom_box(const geometry::ToothProfile &t)
     {
-      const double p = t.angular_pitch() * t.radii().tip, m = t.parameters().rack.module;
-      std::ostringstream s;
-      s << 1e3 * -1.6 * p << "," << 1e3 * 1.6 * p << "," << 1e3 * (t.radii().root - 2.5 * m) << ","
-        << 1e3 * (t.radii().tip + 0.5 * m);
-      return s.str();
+      const double m = t.parameters().rack.module;
+      return zoom_box(t.angular_pitch() * t.radii().tip, t.radii().root - 2.5 * m, t.radii().tip + 0.5 * m);
+    }
+    std::string zoom_box(const geometry::InternalToothProfile &t)
+    {
+      const double m = t.parameters().module;
+      return zoom_box(t.angular_pitch() * t.radii().tip, t.radii().tip - 0.5 * m, t.radii().root + 2.5 * m);
+    }
+
+    /// The gear bodies to mesh: gmsh meshing of gear i (writing `file`), a one-line
+    /// description and the zoom box of its plot.
+    struct Bodies
+    {
+      std::function<mesh::MeshData(int, const std::filesystem::path &)> mesh;
+      std::string text[2], zoom[2];
+    };
+
+    Bodies external_bodies(const geometry::GearPair &pair, const mesh::GearMeshParameters mp[2])
+    {
+      Bodies b;
+      for (int i = 0; i < 2; ++i)
+        {
+          const auto d = mesh::gear_domain(pair.gear(i + 1), mp[i]); // all checks, no gmsh
+          std::ostringstream t;
+          t << "gear " << i + 1 << ": z " << pair.gear(i + 1).teeth() << ", "
+            << (mp[i].model == mesh::GearMeshParameters::Model::sector ?
+                  std::to_string(mp[i].sector_teeth) + "-tooth sector" : std::string("full gear"))
+            << ", inner radius " << mesh::inner_radius(mp[i], pair.gear(i + 1)) * 1e3 << " mm, "
+            << d.loops[0].pieces.size() << " outline pieces\n";
+          b.text[i] = t.str();
+          b.zoom[i] = zoom_box(pair.gear(i + 1));
+        }
+      b.mesh = [&pair, mp0 = mp[0], mp1 = mp[1]](int i, const std::filesystem::path &f) {
+        return mesh::mesh_gear(pair.gear(i + 1), i == 0 ? mp0 : mp1, f);
+      };
+      return b;
+    }
+
+    Bodies internal_bodies(const geometry::InternalGearPair &pair, const mesh::GearMeshParameters &pinion,
+                           const mesh::RingMeshParameters &ring)
+    {
+      Bodies b;
+      const auto d = mesh::gear_domain(pair.pinion(), pinion);
+      std::ostringstream t;
+      t << "gear 1: z " << pair.teeth(1) << ", "
+        << (pinion.model == mesh::GearMeshParameters::Model::sector ?
+              std::to_string(pinion.sector_teeth) + "-tooth sector" : std::string("full gear"))
+        << ", inner radius " << mesh::inner_radius(pinion, pair.pinion()) * 1e3 << " mm, "
+        << d.loops[0].pieces.size() << " outline pieces\n";
+      b.text[0] = t.str();
+      const auto r = mesh::ring_domain(pair.ring(), ring);
+      std::ostringstream u;
+      u << "gear 2 (ring): z " << pair.teeth(2) << ", "
+        << (ring.model == mesh::RingMeshParameters::Model::sector ? std::to_string(ring.sector_teeth) + "-tooth sector" :
+                                                                    std::string("full ring"))
+        << ", outer radius " << mesh::ring_outer_radius(pair.ring(), ring) * 1e3 << " mm, "
+        << (ring.bolts > 0 ? std::to_string(ring.bolts) + " bolts" : std::string("clamped")) << "\n";
+      b.text[1] = u.str();
+      b.zoom[0] = zoom_box(pair.pinion()), b.zoom[1] = zoom_box(pair.ring());
+      b.mesh = [&pair, pinion, ring](int i, const std::filesystem::path &f) {
+        return i == 0 ? mesh::mesh_gear(pair.pinion(), pinion, f) : mesh::mesh_ring(pair.ring(), ring, f);
+      };
+      return b;
     }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
@@ -44,18 +113,26 @@ namespace gearfem::commands
       const geometry::GeometryInput gi = geometry::parse_geometry_parameters(prm);
       (void)geometry::parse_material_parameters(prm);
       (void)fem::parse_fe_parameters(prm);
-      const geometry::GearPair pair = geometry::build_pair(gi);
       mesh::GearMeshParameters mp[2] = {mesh::parse_mesh_parameters(prm, 1),
                                         mesh::parse_mesh_parameters(prm, 2)};
-      for (int i = 0; i < 2; ++i)
+      // An internal pair (Pair/Type = internal): gear 2 is the ring, meshed with its rim.
+      std::unique_ptr<geometry::GearPair> external;
+      std::unique_ptr<geometry::InternalGearPair> internal;
+      Bodies bodies;
+      if (solve::internal_pair_requested(prm))
         {
-          const auto d = mesh::gear_domain(pair.gear(i + 1), mp[i]); // all checks, no gmsh
-          out << "gear " << i + 1 << ": z " << pair.gear(i + 1).teeth() << ", "
-              << (mp[i].model == mesh::GearMeshParameters::Model::sector ?
-                    std::to_string(mp[i].sector_teeth) + "-tooth sector" : std::string("full gear"))
-              << ", inner radius " << mesh::inner_radius(mp[i], pair.gear(i + 1)) * 1e3
-              << " mm, " << d.loops[0].pieces.size() << " outline pieces\n";
+          const solve::RingInput ring = solve::parse_ring_parameters(prm, gi.gear2, mp[1]);
+          internal = std::make_unique<geometry::InternalGearPair>(
+            geometry::ToothProfile::generate(gi.gear1), geometry::InternalToothProfile::generate(ring.gear),
+            gi.pair.center_distance, ring.face_width);
+          bodies = internal_bodies(*internal, mp[0], ring.mesh);
         }
+      else
+        {
+          external = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
+          bodies   = external_bodies(*external, mp);
+        }
+      out << bodies.text[0] << bodies.text[1];
       if (ctx.validate_only)
         return;
 
@@ -81,7 +158,7 @@ namespace gearfem::commands
       for (int i = 0; i < 2; ++i)
         {
           const auto file = tmp / ("gear" + std::to_string(i + 1) + ".msh");
-          const mesh::MeshData m = mesh::mesh_gear(pair.gear(i + 1), mp[i], file);
+          const mesh::MeshData m = bodies.mesh(i, file);
           dealii::Triangulation<2> tria;
           mesh::create_triangulation(m, tria);
           const auto r = mesh::quality(m);
@@ -101,8 +178,7 @@ namespace gearfem::commands
       q.write_csv(ctx.output_dir / "mesh_quality.csv", 6);
       run_plot_script("plot_mesh.py",
                       {(ctx.output_dir / "mesh.png").string(), (ctx.output_dir / "gear1.msh").string(),
-                       zoom_box(pair.gear(1)), (ctx.output_dir / "gear2.msh").string(),
-                       zoom_box(pair.gear(2))},
+                       bodies.zoom[0], (ctx.output_dir / "gear2.msh").string(), bodies.zoom[1]},
                       &out);
     }
   } // namespace
