@@ -88,12 +88,12 @@ namespace gearfem::commands
       "numbers), gearbox_sn.csv, scuffing_path.csv and, with /usr/bin/python3 and matplotlib,\n"
       "gearbox_damage.png, scuffing_path.png and gearbox_sn.png (S-N lines and spectrum bins).\n"
       "Gearbox/Stress source: AGMA (default), ISO (ISO 6336-2/-3), table, or FE (section\n"
-      "`FE stresses`: the external meshes solved by `gearfem solve` sector models; exit 3 on a\n"
+      "`FE stresses`: every mesh (planet-ring as a pinion in a ring) solved by `gearfem solve` sector models; exit 3 on a\n"
       "solver failure, with the finished meshes kept).\n\n"
       "Sample runs:\n"
       "  gearfem gearbox inputs/seed001_gearbox.prm\n"
       "  gearfem gearbox inputs/seed001_gearbox_thesis_stresses.prm\n"
-      "  gearfem gearbox inputs/seed001_gearbox_fe.prm   (Stress source = FE: the external meshes by\n"
+      "  gearfem gearbox inputs/seed001_gearbox_fe.prm   (Stress source = FE: every mesh by\n"
       "  `gearfem solve` sector models, section `FE stresses`; a few minutes)";
     c.declare = declare;
     c.run = run;

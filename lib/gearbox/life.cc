@@ -153,6 +153,10 @@ namespace gearfem::gearbox
         b.add(name, "planet", "contact", "ring-side flank (planet-ring mesh)", mat.contact, {{H1, cp}});
         b.add(name, "planet", "bending", "both meshes; damages summed", mat.bending, {{F0("planet"), cp}, {F11, cp}});
         b.add(name, "ring", "contact", "planet-ring mesh", mat.contact, {{H1, cr}});
+        // The ring in bending where a stress source rates it (the FE: AGMA and ISO do not).
+        const auto F12 = series(stress[k][1], &MeshStress::sigma_F2);
+        if (std::any_of(F12.begin(), F12.end(), [](double v) { return v > 0; }))
+          b.add(name, "ring", "bending", "planet-ring mesh", mat.bending, {{F12, cr}});
       }
     return out;
   }

@@ -166,10 +166,10 @@ namespace gearfem::gearbox
     prm.declare_entry("Stress source", "AGMA", Selection("AGMA|ISO|table|FE"),
                       "AGMA: AGMA 2101-D04/908-B89 from the geometry; ISO: ISO 6336-2 (the larger of "
                       "sigma_H1, sigma_H2 of the mesh) and ISO 6336-3 method B (sigma_F) from the geometry; table: the stresses given per stage "
-                      "at the reference torque, sigma_H scaled with sqrt(M), sigma_F with M; FE: the external "
-                      "meshes solved by `gearfem solve` sector models (section `FE stresses`), sigma_H as "
+                      "at the reference torque, sigma_H scaled with sqrt(M), sigma_F with M; FE: every mesh "
+                      "solved by `gearfem solve` sector models (section `FE stresses`), sigma_H as "
                       "Hertz from the FE load share and sigma_F as the fillet sigma_1, maxima over the mesh "
-                      "cycle; the internal meshes keep AGMA.");
+                      "cycle; the planet-ring mesh as a pinion in a ring, whose ring is then rated in bending.");
     prm.declare_entry("Reference torque", "45000", Double(0), "Input torque of the table stresses. Units: N m.");
     prm.leave_subsection();
     for (int k = 1; k <= max_stages; ++k)

@@ -21,7 +21,7 @@ namespace gearfem::gearbox
     agma, ///< AGMA 2101-D04 / 908-B89 from the geometry (gearbox.h)
     iso,   ///< ISO 6336-2/-3 from the geometry (iso_stresses)
     table, ///< per-mesh stresses given at a reference torque, scaled (scaled_stresses)
-    fe     ///< the external meshes from FE sweeps (lib/gearbox/fe, a layer above solve), the
+    fe     ///< every mesh from FE sweeps (lib/gearbox/fe, a layer above solve), the
            ///< internal meshes AGMA; the table of stresses is given to use_stress_table
   };
   struct GearboxStudy

@@ -38,15 +38,14 @@ namespace gearfem::gearbox::fe
       return s.str();
     }
 
-    /// The meshes solved: (stage, mesh) of the external mesh of each selected stage.
+    /// The meshes solved: (stage, mesh) of every mesh of each selected stage.
     std::vector<std::pair<std::size_t, std::size_t>> selected(const gb::Train &t, const FeStressOptions &o)
     {
       std::vector<std::pair<std::size_t, std::size_t>> r;
       for (std::size_t k = 0; k < t.stages.size(); ++k)
         if (o.stages.empty() || std::find(o.stages.begin(), o.stages.end(), int(k + 1)) != o.stages.end())
           for (std::size_t j = 0; j < t.stages[k].meshes.size(); ++j)
-            if (!t.stages[k].meshes[j].internal)
-              r.emplace_back(k, j);
+            r.emplace_back(k, j);
       return r;
     }
 
@@ -90,7 +89,10 @@ namespace gearfem::gearbox::fe
       c << "subsection Gear " << i + 1 << "\n  set Number of teeth = " << z[i]
         << "\n  set Profile shift coefficient = " << num(x[i]) << "\n  set Tip shortening coefficient = "
         << num(s.tip_shortening) << "\n  set Face width = " << mm(g.b) << "\nend\n";
-    c << "subsection Pair\n  set Centre distance = " << mm(g.a) << "\nend\n";
+    if (g.internal)
+      c << internal_case(g, s, tool);
+    else
+      c << "subsection Pair\n  set Centre distance = " << mm(g.a) << "\nend\n";
     c << "subsection Material\n  set Plane model = plane strain\n";
     for (int i = 1; i <= 2; ++i)
       c << "  subsection Gear " << i << "\n    set Young's modulus = " << num(m.E / 1e9)
@@ -104,6 +106,26 @@ namespace gearfem::gearbox::fe
     for (std::size_t i = 0; i < pinion_torques.size(); ++i)
       c << (i ? ", " : "") << num(pinion_torques[i]);
     c << "\n  set VTU = none\n  set Plots = false\nend\n";
+    return c.str();
+  }
+
+  std::string internal_case(const gb::MeshGeometry &g, const gb::StageInput &s, const rating::agma::Tool &tool)
+  {
+    geometry::InternalGearParameters ring;
+    ring.name = "Gear 2", ring.teeth = g.z2, ring.module = g.module, ring.pressure_angle = g.alpha;
+    ring.profile_shift = g.x2, ring.addendum = s.addendum, ring.tip_shortening = s.tip_shortening;
+    ring.cutter.teeth = g.z1, ring.cutter.addendum = tool.h_ao, ring.cutter.tip_radius = tool.rho_ao;
+    const double r_f2 = geometry::InternalToothProfile::generate(ring).radii().root;
+    std::ostringstream c;
+    c << "subsection Pair\n  set Type = internal\n  set Centre distance = 0\nend\n";
+    c << "subsection Ring\n  set Cutter teeth = " << ring.cutter.teeth << "\n  set Cutter addendum coefficient = "
+      << num(ring.cutter.addendum) << "\n  set Cutter tip radius coefficient = " << num(ring.cutter.tip_radius);
+    const double rim = 0.5 * s.ring_outer - r_f2;
+    if (!(rim > 0))
+      c << "\n  set Backup ratio = 1.2";
+    c << "\nend\n";
+    if (rim > 0)
+      c << "subsection Mesh\n  subsection Gear 2\n    set Rim thickness = " << mm(rim) << "\n  end\nend\n";
     return c.str();
   }
 
@@ -251,12 +273,13 @@ namespace gearfem::gearbox::fe
     std::ostringstream s;
     s << std::setprecision(5);
     s << "\n## FE stresses\n\n"
-      << "External meshes solved with the `gearfem solve` chain (solve::run_solve) on " << o.sector_teeth
+      << "Meshes solved with the `gearfem solve` chain (solve::run_solve) on " << o.sector_teeth
       << "-tooth sector models (plane strain, Lagrange contact), " << o.positions
       << " positions over one mesh cycle from A, at the pinion torque F_t r_w1 K_o K_v K_s K_H (the AGMA "
          "load W). sigma_H: the largest Hertz pressure over the cycle from the FE load share of each "
          "flank-to-flank pair on the local involute radii (p_Hertz); sigma_F: the largest fillet sigma_1 "
-         "of each member over the cycle. Between the solved torques sigma_H/sqrt(T) and sigma_F/T are "
+         "of each member over the cycle (a ring's: its tension-side fillet; planet-ring meshes at the "
+         "zero-backlash centre distance, the ring cut by a shaper with the planet's tooth count). Between the solved torques sigma_H/sqrt(T) and sigma_F/T are "
          "interpolated linearly in T (constant beyond). Files: fe_stresses.csv and each mesh's solve "
          "results folder.\n\n"
       << "| mesh | input torque [N m] | FE pinion torque [N m] | sigma_H (Hertz, FE share) [MPa] | "

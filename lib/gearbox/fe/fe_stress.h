@@ -1,6 +1,6 @@
 #pragma once
-// FE-backed stresses of the gearbox rating: the external meshes of a
-// gearbox (sun-planet of a planetary stage, the pair of a parallel stage) solved with the
+// FE-backed stresses of the gearbox rating: the meshes of a gearbox (sun-planet and
+// planet-ring of a planetary stage, the pair of a parallel stage) solved with the
 // `gearfem solve` chain (solve::run_solve: sweep over one mesh cycle, tables, progress) on
 // sector models, at a few gearbox-input torques; the contact and root stresses over the
 // cycle, interpolated in torque, replace the standard formulas in the damage sum
@@ -38,7 +38,7 @@ namespace gearfem::gearbox::fe
   /// The `FE stresses` section of `gearfem gearbox` (SI units).
   struct FeStressOptions
   {
-    std::vector<int> stages;  ///< 1-based stages whose external mesh is solved; empty: all
+    std::vector<int> stages;  ///< 1-based stages whose meshes are solved; empty: all
     int sector_teeth = 3;     ///< teeth of each sector model [3, 7]
     double h_contact = 0;     ///< flank element size [m]; 0: m/30
     double h_fillet = 0;      ///< fillet element size [m]; 0: m/14
@@ -48,10 +48,16 @@ namespace gearfem::gearbox::fe
     std::filesystem::path output_dir; ///< each mesh's solve results in <dir>/stage<k>_<mesh>/
     std::ostream *out = nullptr;      ///< progress lines; null: silent
   };
+  /// The `Pair` and `Ring` sections (and the ring's rim thickness) of the `gearfem solve` case
+  /// of a planet-ring mesh: Pair/Type = internal at the zero-backlash centre distance (the
+  /// thesis' a = r_w2 - r_w1 leaves negative backlash for the nominal tooth thicknesses), the
+  /// ring cut by a shaper with the planet's tooth count and the AGMA tool's addendum and tip
+  /// radius, its rim from the ring's outside diameter (m_B 1.2 when not given).
+  std::string internal_case(const gb::MeshGeometry &g, const gb::StageInput &s, const rating::agma::Tool &tool);
   /// Throws InputError naming "FE stresses/<entry>", its value and the allowed range.
   void validate(const FeStressOptions &o, std::size_t n_stages);
 
-  /// The `gearfem solve` case (parameter file text) of one external mesh: both gears as
+  /// The `gearfem solve` case (parameter file text) of one mesh: both gears as
   /// sector models, plane strain, the mesh's centre distance (thesis convention a = r_w1 +
   /// r_w2, so the operating pressure angle is that of the AGMA rating), the pinion torques.
   std::string contact_case(const gb::MeshGeometry &g, const gb::StageInput &s, const gb::StageMaterial &m,
@@ -69,7 +75,7 @@ namespace gearfem::gearbox::fe
   /// y(x0) from samples (x ascending): y/x^e interpolated linearly in x, constant beyond.
   double interpolate(const std::vector<double> &x, const std::vector<double> &y, double x0, double e);
 
-  /// One external mesh after its FE sweeps.
+  /// One mesh after its FE sweeps.
   struct MeshFeStress
   {
     std::size_t stage = 0, mesh = 0; ///< 0-based
@@ -96,7 +102,7 @@ namespace gearfem::gearbox::fe
     gb::StressTable stress;
     std::string failure; ///< first solver failure; the meshes before it are complete
   };
-  /// Solve the selected external meshes (progress "FE mesh i/N") and build the table. A
+  /// Solve the meshes of the selected stages (progress "FE mesh i/N") and build the table. A
   /// solver failure stops the loop and is returned in `failure` (the caller exits 3).
   FeStressResult fe_stress_table(const gb::GearboxInput &in, const gb::Train &t, const gb::StressTable &base,
                                  const FeStressOptions &o);

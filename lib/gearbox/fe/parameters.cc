@@ -11,9 +11,10 @@ namespace gearfem::gearbox::fe
     using dealii::Patterns::Anything;
     prm.enter_subsection("FE stresses");
     prm.declare_entry("Stages", "", Anything(),
-                      "Stages (1-based, comma-separated) whose external mesh (sun-planet, or the pair of a "
-                      "parallel stage) is solved by FE when Gearbox/Stress source = FE; empty: all. The "
-                      "internal (planet-ring) meshes keep the standard stresses. Allowed: 1 to the number of stages.");
+                      "Stages (1-based, comma-separated) whose meshes (sun-planet and planet-ring, or the pair of a "
+                      "parallel stage) are solved by FE when Gearbox/Stress source = FE; empty: all. The "
+                      "planet-ring mesh is solved as a pinion in a ring (docs/internal-gears.md). Allowed: 1 to the "
+                      "number of stages.");
     prm.declare_entry("Sector teeth", "3", Anything(), "Teeth of each sector model. Units: none. Allowed: 3 to 7.");
     prm.declare_entry("h_contact", "0", Anything(),
                       "Element size on the drive flanks; 0: m_n/30. Units: mm. Allowed: 0 to 5.");
