@@ -11,6 +11,9 @@
 #include "base/table.h"
 #include "commands/command.h"
 #include "geometry/parameters.h"
+#include "geometry/internal_pair.h"
+#include "rating/internal.h"
+#include "solve/ring_input.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -30,6 +33,54 @@ namespace gearfem::commands
       geometry::declare_material_parameters(prm);
       rating::declare_rating_parameters(prm);
       an::declare_analytical_parameters(prm);
+      solve::declare_ring_parameters(prm);
+    }
+
+    /// The stresses of each torque on stdout.
+    void print_stresses(std::ostream &out, const rating::RatingReport &rep, const std::vector<double> &torques)
+    {
+      out << std::fixed << std::setprecision(1);
+      for (std::size_t i = 0; i < torques.size(); ++i)
+        out << "T = " << torques[i] << " N m: AGMA sigma_H " << rep.row("AGMA", "sigma_H").values[i]
+            << ", sigma_F1 " << rep.row("AGMA", "sigma_F1").values[i] << ", sigma_F2 "
+            << rep.row("AGMA", "sigma_F2").values[i] << " MPa; ISO sigma_H "
+            << rep.row("ISO 6336", "sigma_H1").values[i] << ", sigma_F1 "
+            << rep.row("ISO 6336", "sigma_F1").values[i] << ", sigma_F2 "
+            << rep.row("ISO 6336", "sigma_F2").values[i] << " MPa\n";
+      out.unsetf(std::ios::floatfield);
+    }
+
+    /// `Pair/Type = internal`: the pinion and its shaper-cut ring (docs/internal-gears.md),
+    /// rated by rating::rate_internal with the ring's rim from `Ring/Backup ratio`.
+    void run_internal(dealii::ParameterHandler &prm, const RunContext &ctx, const geometry::GeometryInput &gi,
+                      const rating::RatingInput &ri)
+    {
+      std::ostream &out = *ctx.out;
+      mesh::GearMeshParameters m2; // the ring's mesh sizes are not read here
+      const solve::RingInput ring = solve::parse_ring_parameters(prm, gi.gear2, m2);
+      const geometry::InternalGearPair pair(geometry::ToothProfile::generate(gi.gear1),
+                                            geometry::InternalToothProfile::generate(ring.gear),
+                                            gi.pair.center_distance, ring.face_width);
+      rating::InternalRatingInput in;
+      in.rating          = ri;
+      in.ring_face_width = ring.face_width;
+      const auto &k      = pair.ring().radii();
+      if (ring.mesh.backup_ratio > 0)
+        in.ring_rim_thickness = ring.mesh.backup_ratio * (k.root - k.tip);
+      if (ctx.validate_only)
+        {
+          out << "rate: " << gi.gear1.teeth << "/" << gi.gear2.teeth << " internal pair, " << ri.torques.size()
+              << " torques\n";
+          return;
+        }
+      const rating::RatingReport rep = rating::rate_internal(pair.pinion(), pair.ring(), pair.mesh(), in);
+      rep.write_markdown(ctx.output_dir / "rating.md", "Rating of the " + std::to_string(gi.gear1.teeth) + "/" +
+                                                           std::to_string(gi.gear2.teeth) + " internal pair (" +
+                                                           ctx.input_file.filename().string() + ")");
+      rep.write_csv(ctx.output_dir / "rating.csv");
+      print_stresses(out, rep, ri.torques);
+      out << "wrote " << (ctx.output_dir / "rating.md").string()
+          << ", rating.csv (the analytical mesh cycle covers external pairs only)\n";
     }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
@@ -41,6 +92,8 @@ namespace gearfem::commands
       const an::AnalyticalInput ai = an::parse_analytical_parameters(prm);
       ri.E1 = pm.gear1.youngs_modulus, ri.nu1 = pm.gear1.poisson_ratio;
       ri.E2 = pm.gear2.youngs_modulus, ri.nu2 = pm.gear2.poisson_ratio;
+      if (solve::internal_pair_requested(prm))
+        return run_internal(prm, ctx, gi, ri);
       const geometry::GearPair pair = geometry::build_pair(gi);
       if (ctx.validate_only)
         {
@@ -77,15 +130,7 @@ namespace gearfem::commands
       ct.table.write_csv(ctx.output_dir / "mesh_cycle.csv");
       out << "ratings (ISO 6336 and AGMA, " << ri.torques.size() << " torques) in " << rating_seconds * 1e3 << " ms\n";
 
-      out << std::fixed << std::setprecision(1);
-      for (std::size_t i = 0; i < ri.torques.size(); ++i)
-        out << "T = " << ri.torques[i] << " N m: AGMA sigma_H " << rep.row("AGMA", "sigma_H").values[i]
-            << ", sigma_F1 " << rep.row("AGMA", "sigma_F1").values[i] << ", sigma_F2 "
-            << rep.row("AGMA", "sigma_F2").values[i] << " MPa; ISO sigma_H "
-            << rep.row("ISO 6336", "sigma_H1").values[i] << ", sigma_F1 "
-            << rep.row("ISO 6336", "sigma_F1").values[i] << ", sigma_F2 "
-            << rep.row("ISO 6336", "sigma_F2").values[i] << " MPa\n";
-      out.unsetf(std::ios::floatfield);
+      print_stresses(out, rep, ri.torques);
       out << "wrote " << (ctx.output_dir / "rating.md").string() << ", rating.csv, mesh_cycle.csv\n";
     }
   } // namespace
@@ -101,9 +146,13 @@ namespace gearfem::commands
       "fillet), AGMA 2101-D04 contact and bending stress with AGMA 908-B89 Z_I and Y_J\n"
       "(Lewis parabola, Newton from alpha_n = pi/4). Writes rating.md and rating.csv (every\n"
       "factor with clause, value, unit) and mesh_cycle.csv (analytical mesh stiffness,\n"
-      "loaded STE and load per pair over one pitch for each torque).\n\n"
+      "loaded STE and load per pair over one pitch for each torque).\n"
+      "With Pair/Type = internal (gear 2 a shaper-cut ring: docs/internal-gears.md) the ISO and AGMA\n"
+      "ratings of the internal pair, the ring included, with the rim factors Y_B and K_B from\n"
+      "Ring/Backup ratio (rating.md, rating.csv).\n\n"
       "Sample runs:\n"
-      "  gearfem rate inputs/seed001_23_69_rate.prm";
+      "  gearfem rate inputs/seed001_23_69_rate.prm\n"
+      "  gearfem rate inputs/internal_rate.prm";
     c.declare = declare;
     c.run = run;
     return c;

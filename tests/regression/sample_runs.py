@@ -28,7 +28,8 @@ NEEDS = {'calibrate validation/analytical_vs_fe/calibrate.prm':
          ('results/condense_demo/condensed.h5', 'condensed cycle file')}
 CHEAP = {'profile inputs/demo.prm', 'rate inputs/seed001_23_69_rate.prm', 'gearbox inputs/seed001_gearbox.prm',
          'gearbox inputs/seed001_gearbox_thesis_stresses.prm', 'profile inputs/fzg_c.prm',
-         'dynamics inputs/dynamics_seed004.prm', 'mesh inputs/mesh_demo.prm'}
+         'dynamics inputs/dynamics_seed004.prm', 'mesh inputs/mesh_demo.prm',
+         'rate inputs/internal_rate.prm'}
 
 
 def run(args, **kw):
