@@ -390,8 +390,9 @@ namespace gearfem::mesh
         }
     }
 
-    /// Phase 6: vertices, counter-clockwise quads and boundary edges per curve from gmsh.
-    void extract_mesh(const GmshModel &m, MeshData &out)
+    /// Phase 6: vertices, counter-clockwise quads and boundary edges per curve from gmsh;
+    /// `tags` receives the gmsh node tag of each vertex.
+    void extract_mesh(const GmshModel &m, MeshData &out, std::vector<std::size_t> &tags)
     {
       // Nodes.
       std::vector<std::size_t> node_tags;
@@ -400,7 +401,10 @@ namespace gearfem::mesh
       std::map<std::size_t, unsigned int> index;
       for (std::size_t i = 0; i < node_tags.size(); ++i)
         if (index.emplace(node_tags[i], unsigned(out.vertices.size())).second)
-          out.vertices.emplace_back(coords[3 * i], coords[3 * i + 1]);
+          {
+            out.vertices.emplace_back(coords[3 * i], coords[3 * i + 1]);
+            tags.push_back(node_tags[i]);
+          }
 
       // Quads.
       std::vector<int> types;
@@ -441,16 +445,19 @@ namespace gearfem::mesh
         }
     }
 
-    /// Phase 7 (optional): the .msh file, written through a temporary file and renamed.
-    void write_msh(const std::filesystem::path &target)
+    /// Phase 9 (optional): the .msh file of the final vertices (snapped onto the exact curves
+    /// and untangled: the mesh the solver uses), written through a temporary file and renamed.
+    void write_msh(const MeshData &out, const std::vector<std::size_t> &tags, const std::filesystem::path &target)
     {
+      for (std::size_t v = 0; v < out.vertices.size(); ++v)
+        gmsh::model::mesh::setNode(tags[v], {out.vertices[v].x(), out.vertices[v].y(), 0.0}, {});
       auto tmp = target.parent_path() /
                  ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + ".msh");
       gmsh::write(tmp.string());
       std::filesystem::rename(tmp, target);
     }
 
-    /// Phase 8: snap boundary vertices onto the exact curves (gmsh meshed a spline through
+    /// Phase 7: snap boundary vertices onto the exact curves (gmsh meshed a spline through
     /// samples); a vertex shared by two pieces is their common end point.
     void snap_boundary_vertices(MeshData &out)
     {
@@ -488,6 +495,7 @@ namespace gearfem::mesh
     std::lock_guard<std::mutex> lock(gmsh_mutex);
     const auto t_start = std::chrono::steady_clock::now();
     MeshData out;
+    std::vector<std::size_t> tags;
     GmshSession session;
     try
       {
@@ -497,9 +505,7 @@ namespace gearfem::mesh
         add_size_field(domain, model, out);
         set_curve_node_counts(domain, model, out);
         generate_all_quad(options, model, out);
-        extract_mesh(model, out);
-        if (!options.msh_file.empty())
-          write_msh(options.msh_file);
+        extract_mesh(model, out, tags);
       }
     catch (const std::string &e)
       {
@@ -510,7 +516,16 @@ namespace gearfem::mesh
         gmsh_failure("returned inconsistent node tags", "");
       }
     snap_boundary_vertices(out);
-    untangle_inverted_cells(out);
+    untangle_inverted_cells(out); // phase 8
+    if (!options.msh_file.empty())
+      try
+        {
+          write_msh(out, tags, options.msh_file);
+        }
+      catch (const std::string &e)
+        {
+          gmsh_failure("error writing " + options.msh_file.string() + ": " + e, session.last_errors());
+        }
     out.mesh_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 

@@ -358,8 +358,9 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
 
 # --------------------------------------------------------------------------- results
 def read_dat(path, model):
-    """Per step: T1 from the pinion bore reactions [N m], the gear bore moment about O2
-    [N m], and per contact pair the force and moment about O1 [N, N m]."""
+    """Per step: T1 from the pinion support reactions [N m], the gear support's moment about O2
+    (model["O2"] when given, else the middle of its bore) [N m], and per contact pair the force
+    and moment about O1 [N, N m]."""
     x1, x2, off2 = model["x1"], model["x2"], model["off2"]
     steps, cur = [], None
     with open(path) as f:
@@ -372,7 +373,10 @@ def read_dat(path, model):
             name, t = m.group(1), float(m.group(2))
             if cur is None or cur["time"] != t or name in cur["sets"]:
                 cur = dict(time=t, sets={}, cf=[])
-                steps.append(cur)
+                if steps and steps[-1]["time"] == t:
+                    steps[-1] = cur  # a further increment at the same time (ccx ends some steps with a
+                else:                # zero-size increment): its output replaces the earlier one
+                    steps.append(cur)
             i += 1
             rows = []
             while i < len(text) and (not text[i].strip() or re.match(r"\s*\d+\s", text[i])):
@@ -405,7 +409,9 @@ def read_dat(path, model):
                 M += x * fy - y * fx
             return M * 1e-3 * model["force_scale"]  # N mm -> N m, slab -> face width
         T1 = moment(st["sets"]["BORE1"], x1, 0, np.zeros(2))
-        O2c = np.array([0.0, float(np.mean(x2[[n - 1 - off2 for n, _, _ in st["sets"]["BORE2"]]][:, 1]))])
+        # Gear 2's centre: given (a ring held on an outer arc), or the middle of its bore.
+        O2c = np.asarray(model["O2"], dtype=float) if "O2" in model else \
+            np.array([0.0, float(np.mean(x2[[n - 1 - off2 for n, _, _ in st["sets"]["BORE2"]]][:, 1]))])
         T2 = moment(st["sets"]["BORE2"], x2, off2, O2c)
         pairs = []
         for c, cf in zip(model["contact"], st["cf"]):
