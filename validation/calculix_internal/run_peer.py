@@ -13,12 +13,9 @@ Usage: run_peer.py --gearfem build/app/gearfem --prm inputs/internal_ccx.prm --o
                    [--kappas 30] [--kappa-positions 3:0,4] [--jobs 2] [--ccx ccx] [--reuse]
 """
 import argparse
-import csv
 import json
 import math
 import os
-import re
-import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -143,24 +140,10 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
     w = L.append
     w("*HEADING\ngearfem calculix_internal: planet z %d in ring z %d, roll angle %.4f deg (mm, N, MPa)"
       % (g["z1"], g["z2"], phi1_deg))
-    w("*NODE, NSET=NALL")
-    for k, (x, y) in enumerate(x1):
-        w(f"{k + 1}, {x:.12g}, {y:.12g}")
-    for k, (x, y) in enumerate(x2):
-        w(f"{off2 + k + 1}, {x:.12g}, {y:.12g}")
-    for name, body, eo, no in (("G1", b1, 0, 0), ("G2", b2, eoff2, off2)):
-        w(f"*ELEMENT, TYPE=CPS8, ELSET={name}")
-        for e, q in enumerate(body.elems):
-            w(f"{eo + e + 1}, " + ", ".join(str(no + v + 1) for v in q))
-    w("*MATERIAL, NAME=STEEL\n*ELASTIC\n%.8g, %.8g" % (E, nu))
-    for name in ("G1", "G2"):
-        w(f"*SOLID SECTION, ELSET={name}, MATERIAL=STEEL\n{thickness * slab:.8g}")
+    cm.deck_bodies(w, b1, b2, x1, x2, E, nu, thickness * slab)
 
     def nset(name, ids):
-        w(f"*NSET, NSET={name}")
-        ids = list(ids)
-        for k in range(0, len(ids), 12):
-            w(", ".join(str(v) for v in ids[k:k + 12]))
+        cm.deck_nset(w, name, ids)
 
     sup1 = [v + 1 for v in nodes_of(b1, SUPPORT)]
     sup2 = [off2 + v + 1 for v in nodes_of(b2, SUPPORT)]
@@ -243,19 +226,6 @@ def read_frd_stress(path):
 
 
 # --------------------------------------------------------------------------- runs
-def timed(cmd, log, env=None, cwd=None):
-    """Runs cmd with nice -n 15, output to log; returns (wall, cpu) [s], the CPU time of this
-    child alone (os.wait4), so that two runs side by side are timed apart."""
-    t0 = time.time()
-    with open(log, "w") as f:
-        proc = subprocess.Popen(["nice", "-n", "15"] + cmd, stdout=f, stderr=subprocess.STDOUT, env=env, cwd=cwd)
-        _, status, ru = os.wait4(proc.pid, 0)
-    rc = os.waitstatus_to_exitcode(status)
-    wall, cpu = time.time() - t0, ru.ru_utime + ru.ru_stime
-    if rc != 0:
-        sys.exit(f"{CASE}: FAIL ({' '.join(cmd[:2])} exited with {rc}; see {log})")
-    return wall, cpu
-
 
 def prm_values(path):
     """`set key = value` entries of a parameter file by subsection path ("Gear 1/Number of teeth")."""
@@ -272,14 +242,6 @@ def prm_values(path):
                 vals["/".join(stack + [k.strip()])] = v.strip()
     return vals
 
-
-def write_csv(path, rows):
-    tmp = path + ".tmp"
-    with open(tmp, "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        wr.writeheader()
-        wr.writerows(rows)
-    os.replace(tmp, path)
 
 
 def fine_teeth(text, z):
@@ -309,10 +271,10 @@ def main():
         g_wall, g_cpu = map(float, open(f"{out}/gearfem/time").read().split())
     else:
         print("== gearfem mesh (the meshes that gearfem solve builds)", flush=True)
-        timed([a.gearfem, "mesh", a.prm, "--output-dir", f"{out}/mesh"], f"{out}/gearfem_mesh.log")
+        cm.timed([a.gearfem, "mesh", a.prm, "--output-dir", f"{out}/mesh"], f"{out}/gearfem_mesh.log", case=CASE)
         print("== gearfem solve", flush=True)
-        g_wall, g_cpu = timed([a.gearfem, "solve", a.prm, "--output-dir", f"{out}/gearfem"],
-                              f"{out}/gearfem_solve.log")
+        g_wall, g_cpu = cm.timed([a.gearfem, "solve", a.prm, "--output-dir", f"{out}/gearfem"],
+                              f"{out}/gearfem_solve.log", case=CASE)
         with open(f"{out}/gearfem/time", "w") as f:
             f.write(f"{g_wall} {g_cpu}\n")
     print(f"   gearfem solve: wall {g_wall:.1f} s, CPU {g_cpu:.1f} s", flush=True)
@@ -349,7 +311,7 @@ def main():
             gaps.append(dict(position=p, roll_deg=roll[p], pinion_tooth=q["pinion_tooth"], gear_tooth=q["gear_tooth"],
                              path_roll_deg=roll[p] + k * g["pitch_deg"], unloaded_gap_um=q["gap_mm"] * 1e3,
                              radius_pinion_mm=float(np.linalg.norm(q["close"]))))
-    write_csv(f"{out}/unloaded_gaps.csv", gaps)
+    cm.write_csv(f"{out}/unloaded_gaps.csv", gaps)
     geo = {k: v for k, v in g.items()}
     geo.update(E_MPa=E, nu=nu, face_width_mm=b, h_contact_mm=h_contact, fine1=fine1, fine2=fine2,
                cells=[len(b1.elems), len(b2.elems)], nodes_cps8=[len(b1.xy), len(b2.xy)])
@@ -377,15 +339,7 @@ def main():
         os.makedirs(d, exist_ok=True)
         model = write_deck(f"{d}/{job}.inp", g, b1, b2, roll[p], [dth[(t, p)] for t in torques], slope, b, E, nu,
                            fine1, fine2)
-        if a.reuse and os.path.exists(f"{d}/{job}.time"):
-            wall, cpu = map(float, open(f"{d}/{job}.time").read().split())
-        else:
-            for ext in ("dat", "frd", "time"):
-                if os.path.exists(f"{d}/{job}.{ext}"):
-                    os.remove(f"{d}/{job}.{ext}")
-            wall, cpu = timed([a.ccx, job], f"{d}/{job}.log", env=env, cwd=d)
-            with open(f"{d}/{job}.time", "w") as f:
-                f.write(f"{wall} {cpu}\n")
+        wall, cpu = cm.run_ccx(a.ccx, d, job, a.reuse, env, CASE)
         return kappa, p, slope, job, d, model, wall, cpu
 
     done = 0
@@ -428,11 +382,11 @@ def main():
             print(f"ccx {done}/{len(jobs)}  kappa {kappa:g}, roll {roll[p]:+.3f} deg: wall {wall:.1f} s, CPU {cpu:.1f} s, "
                   f"T1 {', '.join('%.1f' % s['T1'] for s in steps)} N m (gearfem {', '.join('%g' % t for t in torques)}); "
                   f"elapsed {el:.0f} s, ETA {el / done * (len(jobs) - done):.0f} s", flush=True)
-            write_csv(f"{out}/ccx_sweep.csv", sorted(sweep_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
-            write_csv(f"{out}/ccx_pairs.csv", sorted(pair_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
+            cm.write_csv(f"{out}/ccx_sweep.csv", sorted(sweep_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
+            cm.write_csv(f"{out}/ccx_pairs.csv", sorted(pair_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
     time_rows.sort(key=lambda r: (-r["kappa"], r["position"]))
     time_rows.append(dict(kappa=0, position=-1, roll_deg=float("nan"), wall_s=g_wall, cpu_s=g_cpu))
-    write_csv(f"{out}/timing.csv", time_rows)
+    cm.write_csv(f"{out}/timing.csv", time_rows)
     print(f"== ccx: {len(jobs)} runs in {time.time() - t_all:.0f} s", flush=True)
 
 

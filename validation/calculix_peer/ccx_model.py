@@ -21,9 +21,13 @@
 
 Units in the ccx deck: mm, N, MPa.
 """
+import csv
 import math
 import os
 import re
+import subprocess
+import sys
+import time
 
 import numpy as np
 
@@ -256,6 +260,72 @@ def mesh_pairs(g, b1, b2, x1, x2, reach=0.2):
     return out
 
 
+def deck_bodies(w, b1, b2, x1, x2, E, nu, section_thickness):
+    """The two bodies of a deck through the line writer w: nodes (gear 2's numbered after gear
+    1's), CPS8 elements in sets G1 and G2, one steel and its plane-stress sections."""
+    off2, eoff2 = len(x1), len(b1.elems)
+    w("*NODE, NSET=NALL")
+    for k, (x, y) in enumerate(x1):
+        w(f"{k + 1}, {x:.12g}, {y:.12g}")
+    for k, (x, y) in enumerate(x2):
+        w(f"{off2 + k + 1}, {x:.12g}, {y:.12g}")
+    for name, body, eo, no in (("G1", b1, 0, 0), ("G2", b2, eoff2, off2)):
+        w(f"*ELEMENT, TYPE=CPS8, ELSET={name}")
+        for e, q in enumerate(body.elems):
+            w(f"{eo + e + 1}, " + ", ".join(str(no + v + 1) for v in q))
+    w("*MATERIAL, NAME=STEEL\n*ELASTIC\n%.8g, %.8g" % (E, nu))
+    for name in ("G1", "G2"):
+        w(f"*SOLID SECTION, ELSET={name}, MATERIAL=STEEL\n{section_thickness:.8g}")
+
+
+def deck_nset(w, name, ids):
+    """A node set, 12 ids a line."""
+    w(f"*NSET, NSET={name}")
+    ids = list(ids)
+    for k in range(0, len(ids), 12):
+        w(", ".join(str(v) for v in ids[k:k + 12]))
+
+
+def timed(cmd, log, env=None, cwd=None, case="ccx_model"):
+    """Runs cmd with nice -n 15, output to log; returns (wall, cpu) [s], the CPU time (user +
+    system) of this child alone (os.wait4), so that two runs side by side are timed apart.
+    Exits with `<case>: FAIL` when the command fails."""
+    t0 = time.time()
+    with open(log, "w") as f:
+        proc = subprocess.Popen(["nice", "-n", "15"] + cmd, stdout=f, stderr=subprocess.STDOUT, env=env, cwd=cwd)
+        _, status, ru = os.wait4(proc.pid, 0)
+    rc = os.waitstatus_to_exitcode(status)
+    wall, cpu = time.time() - t0, ru.ru_utime + ru.ru_stime
+    if rc != 0:
+        sys.exit(f"{case}: FAIL ({' '.join(cmd[:2])} exited with {rc}; see {log})")
+    return wall, cpu
+
+
+def run_ccx(ccx, d, job, reuse, env, case):
+    """ccx on d/job.inp, single-threaded through env, timed (d/job.time); with `reuse`
+    (development only) a finished run's recorded times instead. Returns (wall, cpu) [s]."""
+    if reuse and os.path.exists(f"{d}/{job}.time"):
+        wall, cpu = map(float, open(f"{d}/{job}.time").read().split())
+        return wall, cpu
+    for ext in ("dat", "frd", "time"):
+        if os.path.exists(f"{d}/{job}.{ext}"):
+            os.remove(f"{d}/{job}.{ext}")
+    wall, cpu = timed([ccx, job], f"{d}/{job}.log", env=env, cwd=d, case=case)
+    with open(f"{d}/{job}.time", "w") as f:
+        f.write(f"{wall} {cpu}\n")
+    return wall, cpu
+
+
+def write_csv(path, rows):
+    """rows (dicts with the same keys) as CSV, through a temporary file."""
+    tmp = path + ".tmp"
+    with open(tmp, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        wr.writeheader()
+        wr.writerows(rows)
+    os.replace(tmp, path)
+
+
 def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, nu, pinion_slave_radius,
                band=(1.0, 1.5), slab=1e-3):
     """The ccx input for one position: one *STEP per pinion bore rotation [urad]. The contact
@@ -278,24 +348,10 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
     L = []
     w = L.append
     w("*HEADING\ngearfem calculix_peer: FZG type C pair, roll angle %.4f deg (mm, N, MPa)" % phi1_deg)
-    w("*NODE, NSET=NALL")
-    for k, (x, y) in enumerate(x1):
-        w(f"{k + 1}, {x:.12g}, {y:.12g}")
-    for k, (x, y) in enumerate(x2):
-        w(f"{off2 + k + 1}, {x:.12g}, {y:.12g}")
-    for name, body, eo, no in (("G1", b1, 0, 0), ("G2", b2, eoff2, off2)):
-        w(f"*ELEMENT, TYPE=CPS8, ELSET={name}")
-        for e, q in enumerate(body.elems):
-            w(f"{eo + e + 1}, " + ", ".join(str(no + v + 1) for v in q))
-    w("*MATERIAL, NAME=STEEL\n*ELASTIC\n%.8g, %.8g" % (E, nu))
-    for name in ("G1", "G2"):
-        w(f"*SOLID SECTION, ELSET={name}, MATERIAL=STEEL\n{thickness * slab:.8g}")
+    deck_bodies(w, b1, b2, x1, x2, E, nu, thickness * slab)
 
     def nset(name, ids):
-        w(f"*NSET, NSET={name}")
-        ids = list(ids)
-        for k in range(0, len(ids), 12):
-            w(", ".join(str(v) for v in ids[k:k + 12]))
+        deck_nset(w, name, ids)
 
     bore1 = [v + 1 for v in b1.group_nodes(1)]
     bore2 = [off2 + v + 1 for v in b2.group_nodes(1)]

@@ -8,11 +8,9 @@ Usage: run_peer.py --gearfem build/app/gearfem --prm inputs/fzg_c_ccx.prm --out 
                    [--kappas 100,10] [--kappa-positions 10:all] [--ccx ccx]
 """
 import argparse
-import csv
 import math
 import os
 from concurrent.futures import ThreadPoolExecutor, as_completed
-import subprocess
 import sys
 import time
 
@@ -20,20 +18,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ccx_model as cm  # noqa: E402
 from vcheck import read_csv  # noqa: E402
 
-
-def timed(cmd, log, env=None, cwd=None):
-    """Runs cmd with nice -n 15, output to log; returns (wall, cpu) [s], the CPU time (user +
-    system) of this child alone (os.wait4), so that two runs side by side are timed apart."""
-    t0 = time.time()
-    with open(log, "w") as f:
-        proc = subprocess.Popen(["nice", "-n", "15"] + cmd, stdout=f, stderr=subprocess.STDOUT, env=env, cwd=cwd)
-        _, status, ru = os.wait4(proc.pid, 0)
-        proc.returncode = os.waitstatus_to_exitcode(status)
-    rc = proc.returncode
-    wall, cpu = time.time() - t0, ru.ru_utime + ru.ru_stime
-    if rc != 0:
-        sys.exit(f"calculix_peer: FAIL ({' '.join(cmd[:2])} exited with {rc}; see {log})")
-    return wall, cpu
 
 
 def read_prm_value(path, key):
@@ -44,14 +28,6 @@ def read_prm_value(path, key):
                 return s.split("=", 1)[1].strip()
     return None
 
-
-def write_csv(path, rows):
-    tmp = path + ".tmp"
-    with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(tmp, path)
 
 
 def main():
@@ -79,15 +55,15 @@ def main():
         g_wall, g_cpu = map(float, open(f"{out}/gearfem/time").read().split())
     else:
         print("== gearfem mesh (the same gmsh meshes that gearfem solve builds)", flush=True)
-        timed([a.gearfem, "mesh", a.prm, "--output-dir", f"{out}/mesh"], f"{out}/gearfem_mesh.log")
+        cm.timed([a.gearfem, "mesh", a.prm, "--output-dir", f"{out}/mesh"], f"{out}/gearfem_mesh.log", case="calculix_peer")
         print("== gearfem solve", flush=True)
-        g_wall, g_cpu = timed([a.gearfem, "solve", a.prm, "--output-dir", f"{out}/gearfem"], f"{out}/gearfem_solve.log")
+        g_wall, g_cpu = cm.timed([a.gearfem, "solve", a.prm, "--output-dir", f"{out}/gearfem"], f"{out}/gearfem_solve.log", case="calculix_peer")
         with open(f"{out}/gearfem/time", "w") as f:
             f.write(f"{g_wall} {g_cpu}\n")
     print(f"   gearfem solve: wall {g_wall:.1f} s, CPU {g_cpu:.1f} s", flush=True)
     if a.fine_prm and not (a.reuse and os.path.exists(f"{out}/gearfem_fine/sweep.csv")):
         print("== gearfem solve on the refined mesh (one global refinement; not timed against ccx)", flush=True)
-        timed([a.gearfem, "solve", a.fine_prm, "--output-dir", f"{out}/gearfem_fine"], f"{out}/gearfem_fine.log")
+        cm.timed([a.gearfem, "solve", a.fine_prm, "--output-dir", f"{out}/gearfem_fine"], f"{out}/gearfem_fine.log", case="calculix_peer")
     sweep = read_csv(f"{out}/gearfem/sweep.csv")
     torques = sorted({r["torque"] for r in sweep})
     positions = sorted({int(r["position"]) for r in sweep})
@@ -124,15 +100,7 @@ def main():
         os.makedirs(d, exist_ok=True)
         rots = [dth[(t, p)] for t in torques]
         model = cm.write_deck(f"{d}/{job}.inp", g, b1, b2, roll[p], rots, slope, b, E, nu, rw1)
-        if a.reuse and os.path.exists(f"{d}/{job}.time"):  # development only: parse the last run again
-            wall, cpu = map(float, open(f"{d}/{job}.time").read().split())
-        else:
-            for ext in ("dat", "frd", "time"):
-                if os.path.exists(f"{d}/{job}.{ext}"):
-                    os.remove(f"{d}/{job}.{ext}")
-            wall, cpu = timed([a.ccx, job], f"{d}/{job}.log", env=env, cwd=d)
-            with open(f"{d}/{job}.time", "w") as f:
-                f.write(f"{wall} {cpu}\n")
+        wall, cpu = cm.run_ccx(a.ccx, d, job, a.reuse, env, "calculix_peer")
         return kappa, p, slope, job, d, model, wall, cpu
 
     done = 0
@@ -175,11 +143,11 @@ def main():
                   f"T1 {', '.join('%.2f' % s['T1'] for s in steps)} N m (gearfem {', '.join('%g' % t for t in torques)}); "
                   f"elapsed {el:.0f} s, ETA {eta:.0f} s", flush=True)
             key = lambda r: (-r["kappa"], r["position"])
-            write_csv(f"{out}/ccx_sweep.csv", sorted(sweep_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
-            write_csv(f"{out}/ccx_pairs.csv", sorted(pair_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
+            cm.write_csv(f"{out}/ccx_sweep.csv", sorted(sweep_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
+            cm.write_csv(f"{out}/ccx_pairs.csv", sorted(pair_rows, key=lambda r: (-r["kappa"], r["torque_gearfem"], r["position"])))
     time_rows.sort(key=key)
     time_rows.append(dict(kappa=0, position=-1, roll_deg=float("nan"), wall_s=g_wall, cpu_s=g_cpu))
-    write_csv(f"{out}/timing.csv", time_rows)
+    cm.write_csv(f"{out}/timing.csv", time_rows)
     print(f"== ccx: {len(jobs)} runs in {time.time() - t_all:.0f} s", flush=True)
 
 
