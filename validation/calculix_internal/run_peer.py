@@ -154,15 +154,7 @@ def write_deck(path, g, b1, b2, phi1_deg, rotations_urad, slope, thickness, E, n
     nset("FILLETS", sorted({v for s in list(fil1.values()) + list(fil2.values()) for v in s}))
 
     def surface(name, body, xb, eo, tags, centre, radius):
-        w(f"*SURFACE, NAME={name}, TYPE=ELEMENT")
-        n = 0
-        for tag in tags:
-            for (e, f), (a, b) in zip(body.group_faces.get(tag, []), body.group_edges.get(tag, [])):
-                if np.linalg.norm(xb[body.mids[frozenset((a, b))]] - centre) <= radius:
-                    w(f"{eo + e + 1}, S{f}")
-                    n += 1
-        if n == 0:
-            raise ValueError(f"contact surface {name}: no face within {radius} mm of the contact")
+        cm.deck_surface(w, name, body, xb, eo, tags, centre, radius)
 
     w("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n%.6g" % slope)
     contact = []
