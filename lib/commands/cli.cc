@@ -112,7 +112,7 @@ namespace gearfem::commands
                         << "  --output-dir DIR           output folder (default results/<case>)\n"
                         << "  --validate                 parse and check the input only\n"
                         << "  --resume                   continue an interrupted run (solve)\n"
-                        << "  --condensed FILE           re-solve on a condensed cycle (solve)\n"
+                        << "  --condensed FILE           re-solve on a condensed cycle (solve, helical)\n"
                         << "  --slice K/N                run designs K, K+N, ... only (batch)\n"
                         << "  --merge                    aggregate finished jobs, run nothing (batch)\n"
                         << "  --print-parameters [json|prm]  all parameters with defaults\n";
@@ -222,8 +222,9 @@ namespace gearfem::commands
 
       if (ctx.resume && cmd.name != "solve")
         throw InputError("--resume", cmd.name, "the solve command", "only `gearfem solve` keeps a journal to resume");
-      if (!ctx.condensed.empty() && cmd.name != "solve")
-        throw InputError("--condensed", cmd.name, "the solve command", "only `gearfem solve` re-solves on a condensed cycle");
+      if (!ctx.condensed.empty() && cmd.name != "solve" && cmd.name != "helical")
+        throw InputError("--condensed", cmd.name, "the solve or helical command",
+                         "only `gearfem solve` and `gearfem helical` re-solve on a condensed cycle");
       if (!ctx.condensed.empty() && ctx.resume)
         throw InputError("--resume", "with --condensed", "a full solve", "a condensed run keeps no journal");
       if ((ctx.merge || ctx.slices > 1) && cmd.name != "batch")

@@ -10,6 +10,7 @@ namespace gearfem::commands
   Command bench_command();
   Command solve_command();
   Command condense_command();
+  Command helical_command();
   Command calibrate_command();
   Command batch_command();
   Command gearbox_command();
@@ -27,6 +28,7 @@ namespace gearfem::commands
       mesh_command(),
       solve_command(),
       condense_command(),
+      helical_command(),
       calibrate_command(),
       batch_command(),
       optimise_command(),

@@ -138,13 +138,20 @@ namespace gearfem::condensed
         throw SolverError("position phi1 = " + to_string_g(cycle_.positions[k].second / units::deg) + " deg, torque " +
                           to_string_g(torque) + " N m: " + e.what());
       }
+    r = evaluate(k, *pp, torque, std::move(cs), options);
+    r.state.t_contact = since(t0) - r.result.t_post;
+    return r;
+  }
+
+  Resolved Resolver::evaluate(std::size_t k, const contact::CondensedPosition &p, double torque,
+                              contact::CondensedSolution cs, const post::PostOptions &options) const
+  {
+    Resolved r;
     r.state.phi1      = cycle_.positions[k].second;
     r.state.torque    = torque;
     r.state.solution  = std::move(cs.solution);
-    r.state.t_contact = since(t0);
 
     const auto t1 = Clock::now();
-    const auto &p = *pp;
     std::array<geometry::Placement, 2> P = {p.placement[0], p.placement[1]};
     P[0].angle += r.state.solution.q;
     const int z[2] = {cycle_.body[0].teeth, cycle_.body[1].teeth};

@@ -51,6 +51,12 @@ namespace gearfem::condensed
     /// none): teeth turned rigidly by manufacturing deviations (tolerance/hunting.h).
     Resolved solve(std::size_t k, double torque, const Eigen::VectorXd &offsets, const Eigen::VectorXd &advance,
                    const post::PostOptions &options) const;
+    /// Evaluate solution `cs` of stored configuration `p` of cycle position k at pinion torque
+    /// T1 [N m] (post's evaluation, root stresses from the stored influence coefficients,
+    /// equilibrium moments): what solve() does after the complementarity solve, for a caller
+    /// that solves the configuration itself (helical/slicing.h).
+    Resolved evaluate(std::size_t k, const contact::CondensedPosition &p, double torque,
+                      contact::CondensedSolution cs, const post::PostOptions &options) const;
 
   private:
     /// Peak fillet sigma_1 of tooth `tooth` of body b under universe forces f: (value, radius).

@@ -166,8 +166,16 @@ namespace gearfem::solve
 
   GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm)
   {
+    return parse_gear_contact_input(prm, nullptr);
+  }
+
+  GearContactInput parse_gear_contact_input(
+    dealii::ParameterHandler &prm,
+    const std::function<geometry::GeometryInput(const geometry::GeometryInput &)> &section)
+  {
     GearContactInput in;
-    const auto gi = geometry::parse_geometry_parameters(prm);
+    const auto gi = section ? section(geometry::parse_geometry_parameters(prm)) :
+                              geometry::parse_geometry_parameters(prm);
     const auto pm = geometry::parse_material_parameters(prm);
     for (int i = 0; i < 2; ++i)
       in.mesh[i] = mesh::parse_mesh_parameters(prm, i + 1);

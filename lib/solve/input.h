@@ -8,9 +8,11 @@
 #include "contact/two_body.h"
 #include "fem/elastic_body.h"
 #include "geometry/pair.h"
+#include "geometry/parameters.h"
 #include "mesh/gear_mesh.h"
 #include "solve/ring_input.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -104,6 +106,11 @@ namespace gearfem::solve
 
   void declare_gear_contact_input(dealii::ParameterHandler &prm);
   GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm);
+  /// The same with the parsed geometry sections mapped by `section` before the pair is built
+  /// (a helical pair's normal section to its transverse section, helical/helix.h).
+  GearContactInput parse_gear_contact_input(
+    dealii::ParameterHandler &prm,
+    const std::function<geometry::GeometryInput(const geometry::GeometryInput &)> &section);
   void declare_solve_parameters(dealii::ParameterHandler &prm);
   SolveParameters parse_solve_parameters(dealii::ParameterHandler &prm);
 } // namespace gearfem::solve

@@ -1,0 +1,105 @@
+// `gearfem helical case.prm`: a helical pair by face-width slicing (helical/run.h): the
+// condensed cycle of its transverse section, the slices coupled across the face at every
+// position and torque, the lead modifications and misalignment of the `Helical` section.
+#include "base/errors.h"
+#include "base/units.h"
+#include "commands/command.h"
+#include "condensed/parameters.h"
+#include "helical/parameters.h"
+#include "helical/run.h"
+#include "post/parameters.h"
+#include "solve/input.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <iomanip>
+
+namespace gearfem::commands
+{
+  namespace
+  {
+    void declare(dealii::ParameterHandler &prm)
+    {
+      solve::declare_gear_contact_input(prm);
+      post::declare_post_parameters(prm);
+      condensed::declare_condense_parameters(prm);
+      helical::declare_helical_parameters(prm);
+    }
+
+    void run(dealii::ParameterHandler &prm, const RunContext &ctx)
+    {
+      std::ostream &out            = *ctx.out;
+      const helical::HelixInput hx = helical::parse_helical_parameters(prm);
+      solve::GearContactInput in =
+        hx.normal_section ? solve::parse_gear_contact_input(prm,
+                                                            [&](const geometry::GeometryInput &g) {
+                                                              return helical::transverse_section(g, hx.beta);
+                                                            }) :
+                            solve::parse_gear_contact_input(prm);
+      const post::PostOptions post = post::parse_post_parameters(prm);
+      const auto cp                = condensed::parse_condense_parameters(prm);
+      helical::RunOptions ro;
+      ro.out          = &out;
+      ro.build_torque = cp.build_torque;
+      ro.torque_lo    = cp.torque_lo;
+      ro.torque_hi    = cp.torque_hi;
+      ro.scene_ratio  = cp.scene_ratio;
+      ro.cycle_file   = ctx.condensed;
+      // The checks and the helix, before any meshing; the positions become the grid.
+      const helical::SlicingOptions o = helical::slicing_options(in, hx, post);
+      {
+        const auto &h = o.helix;
+        out << std::setprecision(5) << "helical: z " << in.pair->gear(1).teeth() << "/" << in.pair->gear(2).teeth()
+            << ", beta " << h.beta / units::deg << " deg (beta_b " << h.beta_b / units::deg << " deg), m_n "
+            << h.m_n / units::mm << " mm, m_t " << h.m_t / units::mm << " mm, alpha_t " << h.alpha_t / units::deg
+            << " deg, b " << h.face_width / units::mm << " mm\n"
+            << "  eps_alpha " << in.pair->contact_ratio() << ", eps_beta " << h.overlap_ratio << ", eps_gamma "
+            << in.pair->contact_ratio() + h.overlap_ratio << "; " << o.slices << " slices, coupling length "
+            << o.coupling_length / units::mm << " mm, mesh misalignment "
+            << o.lead.mesh_misalignment(o.alpha_wt) / units::um << " um, crowning " << o.lead.crowning / units::um
+            << " um; " << o.grid.size << " sections per pitch\n";
+      }
+      if (ctx.validate_only)
+        return;
+      if (ctx.condensed.empty())
+        ro.write_cycle = ctx.output_dir / condensed::file_name;
+      const helical::HelicalRun r = helical::run_helical(in, o, ro);
+      helical::write_helical(r, ctx.output_dir, ctx.input_file.filename().string());
+      out << std::setprecision(5);
+      for (const auto &t : r.summary)
+        out << "T " << t.torque << " N m: STE mean " << t.ste_mean / units::um << " um, p-p " << t.ste_pp / units::um
+            << " um; mesh stiffness " << t.k_mean * units::um << " N/um (c_gamma " << t.c_gamma_iso()
+            << " N/(mm um)); K_Hbeta " << t.k_h_beta << "; p_max " << t.p_max / 1e6 << " MPa; root stress "
+            << t.root_stress_pinion / 1e6 << " / " << t.root_stress_gear / 1e6 << " MPa\n";
+      out << "build " << r.build_seconds << " s, sweep " << r.sweep_seconds << " s (" << r.results.size()
+          << " positions, " << r.sweep_seconds / std::max<std::size_t>(1, r.results.size()) * 1e3
+          << " ms each); wrote helical.csv, slices.csv, lines.csv, helical.json\n";
+      if (in.solve.plots)
+        run_plot_script("plot_helical.py", {ctx.output_dir.string()}, &out);
+      if (!r.failure.empty())
+        throw SolverError(r.failure + " (the " + std::to_string(r.results.size()) + " positions before it are written)");
+    }
+  } // namespace
+
+  Command helical_command()
+  {
+    Command c;
+    c.name        = "helical";
+    c.summary     = "a helical pair by face-width slicing on the condensed cycle of its transverse section";
+    c.description = "Meshes the transverse section of the pair (the Rack and Gear sections in the normal\n"
+                    "section by default, ISO 21771), condenses it over one pitch (the Solve cycle), and\n"
+                    "solves the face as Helical/Slices transverse sections staggered by z tan(beta_b)/r_b1,\n"
+                    "coupled across the face (Pasternak shear layer) and loaded together, with the lead\n"
+                    "crowning, end relief, helix slope deviation and misalignment as gap offsets.\n"
+                    "Writes helical.csv (STE, mesh stiffness, K_Hbeta per position and torque), slices.csv\n"
+                    "(load per unit width, p_max and root stress per slice), lines.csv (load along each\n"
+                    "contact line), helical.json (helix, contact ratios, summary) and condensed.h5, which\n"
+                    "--condensed reuses for another helix angle, slice count or lead modification of the\n"
+                    "same transverse section (docs/helical.md).\n"
+                    "Sample runs:\n"
+                    "  gearfem helical inputs/helical_demo.prm --output-dir results/helical_demo\n";
+    c.declare = declare;
+    c.run     = run;
+    return c;
+  }
+} // namespace gearfem::commands

@@ -1,0 +1,78 @@
+#include "helical/parameters.h"
+
+#include "base/errors.h"
+#include "base/units.h"
+#include "params/checked.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace gearfem::helical
+{
+  void declare_helical_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    prm.enter_subsection("Helical");
+    prm.declare_entry("Helix angle", "0", Double(),
+                      "beta at the reference circle. 0 gives the spur pair as the limit. Units: deg. Allowed: 0 to < 45.");
+    prm.declare_entry("Hand", "right", Selection("right|left"),
+                      "Hand of gear 1 (gear 2 has the other). It sets which end of the face enters mesh first, "
+                      "which matters with a misalignment. Units: none.");
+    prm.declare_entry("Rack section", "normal", Selection("normal|transverse"),
+                      "Section the Rack and Gear entries describe. normal (ISO 21771, as ratings and tool makers "
+                      "give a helical gear): Rack/Module is m_n, Rack/Pressure angle alpha_n, the profile shift and "
+                      "the rack coefficients in m_n; gearfem converts them to the transverse section it meshes "
+                      "(docs/helical.md). transverse: the entries are the transverse section itself. Units: none.");
+    prm.declare_entry("Slices", "21", Integer(),
+                      "Slices over the face width, each a transverse section of width b/N. Units: none. "
+                      "Allowed: 1 to 201.");
+    prm.declare_entry("Coupling length", "-1", Double(),
+                      "Length l of the Pasternak shear coupling of the slices of one tooth pair (docs/helical.md): "
+                      "a point load on the face spreads as exp(-|z|/l). Units: mm. Allowed: -1 (one normal "
+                      "module), 0 (uncoupled slices), or > 0 up to the face width.");
+    prm.declare_entry("Crowning", "0", Double(),
+                      "Lead crowning C_beta, removed at each end of the face (parabolic), both gears together. "
+                      "Units: um. Allowed: 0 to 1000.");
+    prm.declare_entry("End relief", "0", Double(),
+                      "Linear end relief C_I at both ends, both gears together. Units: um. Allowed: 0 to 1000.");
+    prm.declare_entry("End relief length", "0", Double(),
+                      "Length b_I of each end relief from its end. Units: mm. Allowed: 0 to b/2 (> 0 with an end "
+                      "relief).");
+    prm.declare_entry("Helix slope deviation", "0", Double(),
+                      "f_Hbeta over the face width, along the line of action; > 0 opens the gap towards the far end "
+                      "of the face. Units: um. Allowed: -1000 to 1000.");
+    prm.declare_entry("Misalignment", "0", Double(),
+                      "f_Sigma_beta: inclination of the axes out of their plane, over the face width (scale a "
+                      "bearing-span value by b/L). It tilts the contact by f cos(alpha_wt). Units: um. "
+                      "Allowed: -1000 to 1000.");
+    prm.declare_entry("Axis deviation", "0", Double(),
+                      "f_Sigma_delta: deviation of the axes in their plane, over the face width. It tilts the "
+                      "contact by f sin(alpha_wt); the change of each slice's centre distance and working pressure "
+                      "angle with it is not represented. Units: um. Allowed: -1000 to 1000.");
+    prm.leave_subsection();
+  }
+
+  HelixInput parse_helical_parameters(dealii::ParameterHandler &prm)
+  {
+    HelixInput h;
+    prm.enter_subsection("Helical");
+    h.beta            = params::get_double(prm, "Helix angle") * units::deg;
+    h.hand            = prm.get("Hand") == "left" ? -1 : 1;
+    h.normal_section  = prm.get("Rack section") == "normal";
+    h.slices          = params::get_integer(prm, "Slices");
+    const double l    = params::get_double(prm, "Coupling length");
+    h.coupling_length = l < 0 ? l : l * units::mm;
+    auto &m             = h.lead;
+    m.crowning          = params::get_double(prm, "Crowning") * units::um;
+    m.end_relief        = params::get_double(prm, "End relief") * units::um;
+    m.end_relief_length = params::get_double(prm, "End relief length") * units::mm;
+    m.slope             = params::get_double(prm, "Helix slope deviation") * units::um;
+    m.misalignment      = params::get_double(prm, "Misalignment") * units::um;
+    m.deviation         = params::get_double(prm, "Axis deviation") * units::um;
+    prm.leave_subsection();
+    if (l < 0 && l != -1)
+      throw InputError("Helical/Coupling length", to_string_g(l) + " mm", "-1, 0, or > 0 up to the face width");
+    return h;
+  }
+} // namespace gearfem::helical

@@ -1,0 +1,67 @@
+#pragma once
+// The sweep of a helical pair over the mesh cycle (`gearfem helical`): the condensed cycle of
+// its transverse section on the grid of the `Solve` section, the slices on it at every
+// position and torque, the summary per torque, and the tables (docs/helical.md).
+#include "condensed/cycle.h"
+#include "helical/slicing.h"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace gearfem::helical
+{
+  /// The grid of `section`'s `Solve` section (a cycle of N positions over one pitch of gear 1)
+  /// and the slicing options of `hx` on it; sets section's positions to the grid's list (what
+  /// the condensed cycle stores). InputError naming the entry for anything else.
+  SlicingOptions slicing_options(solve::GearContactInput &section, const HelixInput &hx,
+                                 const post::PostOptions &post);
+
+  /// The figures of one torque over the cycle.
+  struct TorqueSummary
+  {
+    double torque = 0;                  ///< [N m]
+    double ste_mean = 0, ste_pp = 0;    ///< [m]
+    double k_mean = 0;                  ///< mean secant mesh stiffness [N/m]
+    double c_gamma = 0;                 ///< k_mean / b [N/m^2] (ISO 6336-1's c_gamma per unit width)
+    double c_gamma_iso() const { return c_gamma / 1e9; } ///< the same in N/(mm um)
+    double k_h_beta = 0;                ///< largest face load factor over the cycle
+    double root_stress_pinion = 0, root_stress_gear = 0, p_max = 0; ///< largest over the cycle [Pa]
+  };
+
+  struct HelicalRun
+  {
+    Helix helix;
+    SlicingOptions options;
+    double eps_alpha = 0, eps_gamma = 0;
+    std::vector<double> torques;
+    std::vector<HelicalResult> results; ///< torque-major, in grid order
+    std::vector<TorqueSummary> summary;
+    std::string failure;                ///< empty: every position solved
+    double build_seconds = 0;           ///< mesh, factorise and condense (0 with a given cycle)
+    double sweep_seconds = 0;           ///< all positions and torques on the cycle
+  };
+
+  struct RunOptions
+  {
+    std::ostream *out = nullptr; ///< progress i/N with ETA; null: quiet
+    /// The condensed cycle's torques (condensed/cycle.h): 0 takes the largest torque, and the
+    /// range an eighth of the smallest to 4 times the largest (slices of a misaligned face
+    /// carry from nothing to several times the mean).
+    double build_torque = 0, torque_lo = 0, torque_hi = 0, scene_ratio = 4;
+    std::filesystem::path cycle_file; ///< read this condensed cycle instead of building one
+    std::filesystem::path write_cycle; ///< write the built cycle here (empty: not written)
+  };
+
+  /// Build (or read) the cycle of `section` (positions set by slicing_options, which gave
+  /// `o`) and sweep every torque and position. A position that fails ends the sweep with
+  /// `failure` set; what was solved is kept.
+  HelicalRun run_helical(const solve::GearContactInput &section, const SlicingOptions &o, const RunOptions &options);
+  std::vector<TorqueSummary> summarise(const std::vector<HelicalResult> &results);
+
+  /// helical.csv (a row per position and torque), slices.csv (a row per slice),
+  /// lines.csv (the loaded contact-line points) and helical.json (the helix and the summary),
+  /// each written atomically into `dir`.
+  void write_helical(const HelicalRun &run, const std::filesystem::path &dir, const std::string &input_name);
+} // namespace gearfem::helical

@@ -1,0 +1,127 @@
+#pragma once
+// A helical pair as slices of its face width on the condensed cycle of its transverse section
+// (condensed/cycle.h). Slice k, centred at axial position z_k, is the transverse section at
+// roll angle phi1 + z_k tan(beta_b) / r_b1 (helix.h); it is the stored 2-D section of width
+// b/N: its Delassus operator is N W, its pressures and stresses those of the 2-D section at
+// N times its load. A slice whose roll angle falls between two stored positions is split
+// into two sub-slices at those positions, their widths in proportion to the distance (the
+// section's compliance interpolated linearly in the roll angle; exact on the grid).
+//
+// Coupling across the face (Pasternak foundation; Ajmi & Velex 2005, Mech. Mach. Theory 40,
+// 173-190, after the elastic-foundation view of the tooth of Weber/Banaschek): the sections
+// of one tooth pair are joined by a shear layer. For each tooth pair, with K_k the stiffness
+// of its section in slice k (the global part: the pair's minimum compliance over its stored
+// candidates, which leaves out the local Hertzian flattening of the actual patch) and a shear
+// stiffness G_k,k+1 = l^2 sqrt(K_k K_k+1) / dz^2 between neighbours, the deflections of the
+// pair along the face are w = (K + G L)^-1 F instead of K^-1 F (L the chain Laplacian with free
+// ends). The correction (K + G L)^-1 - K^-1, which is negative semi-definite, is added to the
+// Delassus operator through the arms of the pair's candidates, so that the coupled operator
+// stays positive definite. A point load on the shear layer spreads as exp(-|z|/l) / (2 l): the
+// default l = m_n matches the second moment of Wellauer & Seireg's cantilever-plate moment
+// kernel (1960) for a load about 1.4 m_n above the root. l = 0: uncoupled slices (Winkler).
+//
+// All slices share the rigid rotation of the pinion; the torque is carried by their sum; the
+// contact problem of all slices together is solved by a primal-dual active set on the stored
+// candidates near contact, the set grown where an excluded candidate would penetrate.
+#include "condensed/cycle.h"
+#include "condensed/resolve.h"
+#include "helical/helix.h"
+#include "post/position.h"
+#include "solve/input.h"
+
+#include <Eigen/Dense>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace gearfem::helical
+{
+  /// The stored positions: G positions equally spaced over one pitch of gear 1 from phi0.
+  struct Grid
+  {
+    double phi0 = 0, step = 0; ///< [rad]
+    int size = 0;
+    std::vector<std::pair<std::string, double>> positions() const;
+  };
+
+  struct SliceResult
+  {
+    double z = 0;              ///< slice centre [m]
+    double phi1 = 0;           ///< roll angle of its section [rad]
+    double force = 0;          ///< transverse normal force of the slice, its torque / r_b1 [N]
+    double load_per_width = 0; ///< force / slice width [N/m]
+    double p_max = 0;          ///< peak flank pressure [Pa] (0 unloaded)
+    /// Peak fillet sigma_1 of the section at the slice's load per unit width [Pa].
+    double root_stress_pinion = 0, root_stress_gear = 0;
+    double lead_gap = 0;       ///< gap offset of the lead modifications [m]
+  };
+
+  /// One tooth pair's load along its contact line: per slice, its transverse normal force
+  /// per unit face width [N/m] (0 where it does not touch). Teeth in the labels of the
+  /// section at z = 0 of the first stored position.
+  struct ContactLine
+  {
+    int pinion_tooth = 0, gear_tooth = 0;
+    std::vector<double> load_per_width;
+  };
+
+  struct HelicalResult
+  {
+    double phi1 = 0;         ///< roll angle of the middle section [rad]
+    double torque = 0;       ///< pinion torque T1 [N m]
+    double rotation = 0;     ///< [rad]
+    double ste = 0;          ///< rotation r_b1 [m]
+    double normal_force = 0; ///< T1 / r_b1, transverse [N]
+    double k_mesh = 0;       ///< secant normal_force / ste [N/m]
+    double k_tangent = 0;    ///< dF/d(STE) at the converged active set [N/m]
+    double k_h_beta = 0;     ///< face load factor: max over slices of w / (F / b)
+    double p_max = 0, root_stress_pinion = 0, root_stress_gear = 0; ///< maxima over the slices [Pa]
+    int n_pairs = 0;         ///< tooth pairs carrying load somewhere on the face
+    std::vector<SliceResult> slices;
+    std::vector<ContactLine> lines;
+    int candidates = 0;      ///< unknowns of the coupled complementarity problem
+    int iterations = 0;      ///< active-set iterations, all passes
+    double seconds = 0;      ///< wall time [s]
+  };
+
+  struct SlicingOptions
+  {
+    Helix helix;
+    int slices = 21;
+    double coupling_length = 0; ///< l [m], >= 0
+    LeadModification lead;
+    double alpha_wt = 0;        ///< working transverse pressure angle [rad] (lead_gap)
+    Grid grid;
+    post::PostOptions post;
+  };
+
+  class SlicedPair
+  {
+  public:
+    /// `section`: the transverse section whose `Solve` positions are grid.positions() (the
+    /// cycle's). Both must outlive this object.
+    SlicedPair(const condensed::CondensedCycle &cycle, const solve::GearContactInput &section, SlicingOptions options);
+    /// The pair at roll angle phi1 of its middle section under pinion torque T1 > 0 [N m].
+    /// SolverError when the complementarity problem fails or leaves the stored candidates.
+    HelicalResult solve(double phi1, double torque) const;
+    const SlicingOptions &options() const { return o_; }
+
+  private:
+    struct Sub;
+    struct System;
+    std::vector<Sub> subs(double phi1) const;
+    double pair_compliance(const contact::CondensedPosition &p, int t1, int t2) const;
+    void couple(System &s, const std::vector<Sub> &sub) const;
+    HelicalResult evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const;
+    const condensed::CondensedCycle &cycle_;
+    const solve::GearContactInput &in_;
+    SlicingOptions o_;
+    condensed::Resolver resolver_;
+    double rb1_ = 0;
+    int z_[2] = {0, 0};
+    mutable std::map<std::tuple<const void *, int, int>, double> kappa_;
+  };
+} // namespace gearfem::helical
