@@ -72,7 +72,8 @@ namespace gearfem::helical
         << ", \"eps_beta\": " << h.overlap_ratio << ", \"eps_gamma\": " << run.eps_gamma << ", \"slices\": " << o.slices
         << ", \"coupling_length_mm\": " << o.coupling_length / units::mm << ", \"grid_positions\": " << o.grid.size
         << ",\n  \"mesh_misalignment_um\": " << o.lead.mesh_misalignment(o.alpha_wt) / units::um
-        << ", \"crowning_um\": " << o.lead.crowning / units::um << ", \"build_seconds\": " << run.build_seconds
+        << ", \"crowning_um\": " << o.lead.crowning / units::um << ", \"setup_seconds\": " << run.setup_seconds
+        << ", \"build_seconds\": " << run.build_seconds
         << ", \"sweep_seconds\": " << run.sweep_seconds << ", \"solved\": " << run.results.size()
         << ", \"failure\": \"" << (run.failure.empty() ? "" : "see the console") << "\",\n  \"torques\": [";
       for (std::size_t i = 0; i < run.summary.size(); ++i)

@@ -123,6 +123,7 @@ namespace gearfem::helical
                   << model->setup_seconds() << " s; condensing " << in.positions().size()
                   << " sections for torques " << lo << " to " << hi << " N m\n";
         cycle = condensed::build_cycle(*model, in, T, lo, hi, ro.out, ro.scene_ratio);
+        run.setup_seconds = model->setup_seconds();
         run.build_seconds = since(t0);
         if (!ro.write_cycle.empty())
           condensed::write_cycle(cycle, ro.write_cycle);

@@ -39,7 +39,8 @@ namespace gearfem::helical
     std::vector<HelicalResult> results; ///< torque-major, in grid order
     std::vector<TorqueSummary> summary;
     std::string failure;                ///< empty: every position solved
-    double build_seconds = 0;           ///< mesh, factorise and condense (0 with a given cycle)
+    double setup_seconds = 0;           ///< mesh, assemble and factorise the section (0 with a given cycle)
+    double build_seconds = 0;           ///< set-up and condensation over the grid (0 with a given cycle)
     double sweep_seconds = 0;           ///< all positions and torques on the cycle
   };
 

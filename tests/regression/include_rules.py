@@ -38,6 +38,8 @@ ALLOWED = {
     'batch': {'base', 'params', 'io', 'geometry', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve', 'condensed'},
     'tolerance': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'dynamics', 'mesh', 'fem',
                   'contact', 'loading', 'post', 'solve', 'condensed'},
+    'helical': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'mesh', 'fem', 'contact',
+                'loading', 'post', 'solve', 'condensed'},
     'exchange': {'base', 'params', 'io'},
     'commands': None,  # wires everything together
 }
