@@ -31,9 +31,13 @@ namespace gearfem::analytical::iso6336
     require_range("Rack/Pressure angle", in.alpha_n / deg, 10.0, 35.0, "deg");
     require_range("Helix angle", in.beta / deg, 0.0, 45.0, "deg");
     require_range("Rating/Rim ratio b_s/b", in.rim_ratio, 0.0, 1.0);
-    const double cb3 = std::pow(std::cos(in.beta), 3);
-    const double zn1 = in.z1 / cb3;
-    const double zn2 = in.z2 < 0 ? std::numeric_limits<double>::infinity() : in.z2 / cb3;
+    // Virtual numbers of teeth z_n = z / (cos^2 beta_b cos beta) (ISO 21771; the ISO/TR 6336-30
+    // example 1 values of c'_th follow from it, not from z / cos^3 beta).
+    const double alpha_t = std::atan(std::tan(in.alpha_n) / std::cos(in.beta));
+    const double beta_b  = std::atan(std::tan(in.beta) * std::cos(alpha_t));
+    const double cz  = std::pow(std::cos(beta_b), 2) * std::cos(in.beta);
+    const double zn1 = in.z1 / cz;
+    const double zn2 = in.z2 < 0 ? std::numeric_limits<double>::infinity() : in.z2 / cz;
     Stiffness s;
     s.q_prime = q_prime(zn1, zn2, in.x1, in.x2);
     s.c_th = 1.0 / s.q_prime;

@@ -34,6 +34,7 @@ namespace gearfem::analytical::iso6336
     double c_gamma_beta = 0;  ///< 0.85 c_gamma_alpha [N/(mm um)]
   };
 
+  /// z_n = z / (cos^2 beta_b cos beta).
   /// q' = 0.04723 + 0.15551/z_n1 + 0.25791/z_n2 - 0.00635 x1 - 0.11654 x1/z_n1 - 0.00193 x2
   ///      - 0.24188 x2/z_n2 + 0.00529 x1^2 + 0.00182 x2^2   [mm um/N]   (ISO 6336-1 eq. 71)
   double q_prime(double zn1, double zn2, double x1, double x2);

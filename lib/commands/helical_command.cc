@@ -54,7 +54,8 @@ namespace gearfem::commands
             << h.m_n / units::mm << " mm, m_t " << h.m_t / units::mm << " mm, alpha_t " << h.alpha_t / units::deg
             << " deg, b " << h.face_width / units::mm << " mm\n"
             << "  eps_alpha " << in.pair->contact_ratio() << ", eps_beta " << h.overlap_ratio << ", eps_gamma "
-            << in.pair->contact_ratio() + h.overlap_ratio << "; " << o.slices << " slices, coupling length "
+            << in.pair->contact_ratio() + h.overlap_ratio << "; " << o.slices << " slices, "
+            << (o.coupling == helical::Coupling::shear ? "shear" : "bending") << " coupling, length "
             << o.coupling_length / units::mm << " mm, mesh misalignment "
             << o.lead.mesh_misalignment(o.alpha_wt) / units::um << " um, crowning " << o.lead.crowning / units::um
             << " um; " << o.grid.size << " sections per pitch\n";

@@ -21,6 +21,17 @@ namespace gearfem::contact
     }
   } // namespace
 
+  void turn_body1(ContactPoint &p, const Vec2 &o1, double dq)
+  {
+    if (p.slave_body == 1)
+      p.x = rotate_about(p.x, o1, dq);
+    else
+      {
+        p.master_point = rotate_about(p.master_point, o1, dq);
+        p.normal       = rotate_about(p.normal, Vec2::Zero(), dq);
+      }
+  }
+
   namespace
   {
     CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset,
@@ -146,14 +157,7 @@ namespace gearfem::contact
         for (const auto &[j, coef] : c.pressure[k])
           p.pressure += coef * ncp.lambda[j];
         // Body 1 turns with q: its points follow the rotation from the build state.
-        const double dq = q - c.q_build;
-        if (p.slave_body == 1)
-          p.x = rotate_about(p.x, o1, dq);
-        else
-          {
-            p.master_point = rotate_about(p.master_point, o1, dq);
-            p.normal       = rotate_about(p.normal, Vec2::Zero(), dq);
-          }
+        turn_body1(p, o1, q - c.q_build);
         s.max_penetration = std::max(s.max_penetration, -p.gap);
         if (ncp.active[k])
           ++s.n_active;

@@ -84,6 +84,10 @@ namespace gearfem::contact
     std::vector<std::pair<int, double>> universe_forces[2]; ///< (universe index, value) [N]
   };
 
+  /// Move stored point `p` (pair frame at the build state) with body 1 turned by dq [rad] about
+  /// its centre o1: the slave node when body 1 carries it, else the master point and normal.
+  void turn_body1(ContactPoint &p, const Vec2 &o1, double dq);
+
   /// Solve position `c` at generalised force `load` (torque control, > 0) with the gap
   /// modifications `offset` (one per candidate, o_k [m]; empty: none). Newton on q over the
   /// curvature term, the complementarity problem of contact/ncp.h at each step; converges

@@ -8,9 +8,11 @@ namespace gearfem::contact
   /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
   /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
   /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
-  NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
-                      const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in)
+  namespace
+  {
+  NcpResult solve_impl(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
+                       const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in, bool spd)
   {
     const int m = int(W.rows());
     const Eigen::VectorXd &af = af_in.size() == m ? af_in : a;
@@ -70,15 +72,38 @@ namespace gearfem::contact
               }
             K(n, n) = 0;
             rhs[n]  = -value;
-            const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
-            if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
+            if (spd)
               {
-                r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
-                return r;
+                // lambda = -M^-1 (ghat + a q), a^T lambda = -T: q from the Schur complement.
+                const Eigen::LLT<Eigen::MatrixXd> llt(K.topLeftCorner(n, n));
+                if (llt.info() != Eigen::Success)
+                  {
+                    r.why = "the contact operator is not positive definite on the active set";
+                    return r;
+                  }
+                const Eigen::VectorXd x1 = llt.solve(-rhs.head(n)), x2 = llt.solve(K.col(n).head(n));
+                const double den = K.col(n).head(n).dot(x2);
+                if (!(den > 0))
+                  {
+                    r.why = "the active nodes cannot carry the load";
+                    return r;
+                  }
+                r.q = (value - K.col(n).head(n).dot(x1)) / den;
+                for (int i = 0; i < n; ++i)
+                  r.lambda[A[i]] = -x1[i] - x2[i] * r.q;
               }
-            for (int i = 0; i < n; ++i)
-              r.lambda[A[i]] = x[i];
-            r.q = x[n];
+            else
+              {
+                const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
+                if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
+                  {
+                    r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
+                    return r;
+                  }
+                for (int i = 0; i < n; ++i)
+                  r.lambda[A[i]] = x[i];
+                r.q = x[n];
+              }
           }
         else if (n > 0)
           {
@@ -143,5 +168,20 @@ namespace gearfem::contact
       }
     r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
     return r;
+  }
+  } // namespace
+
+  NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                      const Eigen::VectorXd &ghat, Control control, double value, double q0,
+                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in)
+  {
+    return solve_impl(W, D, a, ghat, control, value, q0, lambda0, max_iterations, af_in, false);
+  }
+
+  NcpResult solve_ncp_spd(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                          const Eigen::VectorXd &ghat, double load, double q0, const Eigen::VectorXd &lambda0,
+                          int max_iterations)
+  {
+    return solve_impl(W, D, a, ghat, Control::load, load, q0, lambda0, max_iterations, Eigen::VectorXd(), true);
   }
 } // namespace gearfem::contact

@@ -33,4 +33,12 @@ namespace gearfem::contact
                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
                       const Eigen::VectorXd &lambda0, int max_iterations,
                       const Eigen::VectorXd &af = Eigen::VectorXd());
+  /// The same under load control for a symmetric positive definite W (no friction): the
+  /// bordered active-set system is solved through the Cholesky factor of the active block
+  /// (the Schur complement on q), a fraction of the cost of the general LU on large sets (the
+  /// coupled slices of helical/slicing.h). Fails (ok false) where the active block is not
+  /// positive definite.
+  NcpResult solve_ncp_spd(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                          const Eigen::VectorXd &ghat, double load, double q0, const Eigen::VectorXd &lambda0,
+                          int max_iterations);
 } // namespace gearfem::contact

@@ -32,6 +32,13 @@ namespace gearfem::helical
     double mesh_misalignment(double alpha_wt) const;
   };
 
+  /// How the slices of one tooth pair are joined across the face (helical/slicing.h).
+  enum class Coupling
+  {
+    bending, ///< a beam along the face on the sections' foundation (free ends)
+    shear    ///< a Pasternak shear layer between neighbouring sections
+  };
+
   /// The `Helical` section.
   struct HelixInput
   {
@@ -42,8 +49,9 @@ namespace gearfem::helical
     /// false: they give the transverse section itself.
     bool normal_section = true;
     int slices = 21;  ///< slices over the face width
-    /// Length of the Pasternak shear coupling between neighbouring slices [m] (helical/slicing.h);
-    /// 0: uncoupled slices; < 0: the default, one normal module.
+    Coupling coupling = Coupling::bending;
+    /// Length l of the coupling between neighbouring slices [m] (helical/slicing.h): a point
+    /// load spreads over an effective width 2 l; 0: uncoupled slices; < 0: one normal module.
     double coupling_length = -1;
     LeadModification lead;
   };

@@ -27,10 +27,15 @@ namespace gearfem::helical
     prm.declare_entry("Slices", "21", Integer(),
                       "Slices over the face width, each a transverse section of width b/N. Units: none. "
                       "Allowed: 1 to 201.");
+    prm.declare_entry("Coupling", "bending", Selection("bending|shear"),
+                      "How the slices of one tooth pair are joined across the face (docs/helical.md). bending: a "
+                      "beam along the face on the sections' foundation with free ends (a uniform load and a rigid "
+                      "tilt cost nothing). shear: a Pasternak layer, whose free ends carry an edge force under a "
+                      "misalignment. Units: none.");
     prm.declare_entry("Coupling length", "-1", Double(),
-                      "Length l of the Pasternak shear coupling of the slices of one tooth pair (docs/helical.md): "
-                      "a point load on the face spreads as exp(-|z|/l). Units: mm. Allowed: -1 (one normal "
-                      "module), 0 (uncoupled slices), or > 0 up to the face width.");
+                      "Length l of the coupling: a point load on the face spreads over an effective width 2 l "
+                      "(docs/helical.md). Units: mm. Allowed: -1 (one normal module), 0 (uncoupled slices), or "
+                      "> 0 up to the face width.");
     prm.declare_entry("Crowning", "0", Double(),
                       "Lead crowning C_beta, removed at each end of the face (parabolic), both gears together. "
                       "Units: um. Allowed: 0 to 1000.");
@@ -61,6 +66,7 @@ namespace gearfem::helical
     h.hand            = prm.get("Hand") == "left" ? -1 : 1;
     h.normal_section  = prm.get("Rack section") == "normal";
     h.slices          = params::get_integer(prm, "Slices");
+    h.coupling        = prm.get("Coupling") == "shear" ? Coupling::shear : Coupling::bending;
     const double l    = params::get_double(prm, "Coupling length");
     h.coupling_length = l < 0 ? l : l * units::mm;
     auto &m             = h.lead;

@@ -38,6 +38,7 @@ namespace gearfem::helical
     const auto &r = pair.gear(1).parameters().rack;
     o.helix       = helix(hx, r.module, r.pressure_angle, pair.base_radius(1), b);
     o.slices      = hx.slices;
+    o.coupling        = hx.coupling;
     o.coupling_length = hx.coupling_length < 0 ? o.helix.m_n : hx.coupling_length;
     o.lead        = hx.lead;
     o.alpha_wt    = pair.working_pressure_angle();

@@ -2,6 +2,8 @@
 #include "helical/slicing.h"
 #include "helical/slicing_detail.h"
 
+#include "contact/ncp.h"
+
 #include "base/errors.h"
 #include "base/units.h"
 
@@ -23,90 +25,6 @@ namespace gearfem::helical
     /// gap of contact there; the others join where they would penetrate.
     constexpr double initial_gap = 10e-6;
 
-    /// The symmetric complementarity problem g = ghat + a q + W lambda under load control
-    /// (-a^T lambda = T), primal-dual active set (as contact::solve_ncp, with the bordered
-    /// system solved by Cholesky of the active block: W is symmetric positive definite).
-    Pdas pdas(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a, const Eigen::VectorXd &ghat,
-              double T, const Eigen::VectorXd &lambda0, int max_iterations)
-    {
-      const int m = int(W.rows());
-      Pdas r;
-      r.lambda = Eigen::VectorXd::Zero(m);
-      std::vector<char> active(std::size_t(m), 0);
-      bool any = false;
-      for (int k = 0; k < m; ++k)
-        if (lambda0[k] > 0)
-          active[std::size_t(k)] = 1, any = true;
-      if (!any)
-        {
-          int best = -1;
-          double qmin = 1e300;
-          for (int k = 0; k < m; ++k)
-            if (a[k] < 0 && ghat[k] / -a[k] < qmin)
-              qmin = ghat[k] / -a[k], best = k;
-          if (best >= 0)
-            active[std::size_t(best)] = 1;
-        }
-      std::set<std::vector<char>> seen;
-      for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations)
-        {
-          std::vector<int> A;
-          for (int k = 0; k < m; ++k)
-            if (active[std::size_t(k)])
-              A.push_back(k);
-          const int n = int(A.size());
-          if (n == 0)
-            {
-              r.why = "no candidate can close its gap as the pinion turns (no contact)";
-              return r;
-            }
-          Eigen::MatrixXd M(n, n);
-          Eigen::VectorXd gA(n), aA(n);
-          for (int i = 0; i < n; ++i)
-            {
-              for (int j = 0; j < n; ++j)
-                M(i, j) = W(A[i], A[j]);
-              M(i, i) += D[A[i]];
-              gA[i] = ghat[A[i]], aA[i] = a[A[i]];
-            }
-          const Eigen::LLT<Eigen::MatrixXd> llt(M);
-          if (llt.info() != Eigen::Success)
-            {
-              r.why = "the coupled operator is not positive definite on the active set";
-              return r;
-            }
-          const Eigen::VectorXd x1 = llt.solve(gA), x2 = llt.solve(aA);
-          const double den = aA.dot(x2);
-          if (!(den > 0))
-            {
-              r.why = "the active candidates cannot carry the torque";
-              return r;
-            }
-          r.q = (T - aA.dot(x1)) / den;
-          r.lambda.setZero();
-          for (int i = 0; i < n; ++i)
-            r.lambda[A[i]] = -x1[i] - x2[i] * r.q;
-          r.gap = ghat + a * r.q + W * r.lambda;
-          std::vector<char> next(std::size_t(m), 0);
-          for (int k = 0; k < m; ++k)
-            next[std::size_t(k)] = r.lambda[k] - r.gap[k] / W(k, k) > 0;
-          if (next == active)
-            {
-              r.ok      = true;
-              r.active  = active;
-              r.tangent = den;
-              return r;
-            }
-          if (!seen.insert(active).second)
-            {
-              r.why = "the active set cycles";
-              return r;
-            }
-          active = next;
-        }
-      r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
-      return r;
-    }
   } // namespace
 
   std::vector<std::pair<std::string, double>> Grid::positions() const
@@ -159,28 +77,33 @@ namespace gearfem::helical
     return out;
   }
 
-  double SlicedPair::pair_compliance(const contact::CondensedPosition &p, int t1, int t2) const
+  Eigen::MatrixXd SlicedPair::section_stiffness(const contact::CondensedPosition &p,
+                                                const std::vector<std::pair<int, int>> &pairs) const
   {
-    const auto key = std::make_tuple(static_cast<const void *>(&p), t1, t2);
-    if (const auto it = kappa_.find(key); it != kappa_.end())
+    auto key = std::make_pair(static_cast<const void *>(&p), pairs);
+    if (const auto it = section_.find(key); it != section_.end())
       return it->second;
-    std::vector<int> idx;
+    // The stored candidates of these pairs, and the arm of each on its pair's torque.
+    const int n = int(pairs.size());
+    std::vector<int> idx, row;
     for (std::size_t c = 0; c < p.size(); ++c)
-      if (p.cand[c].point.tooth(1) == t1 && p.cand[c].point.tooth(2) == t2)
-        idx.push_back(int(c));
-    const int n = int(idx.size());
-    Eigen::MatrixXd Wp(n, n);
-    Eigen::VectorXd arm(n);
-    for (int i = 0; i < n; ++i)
+      for (int r = 0; r < n; ++r)
+        if (p.cand[c].point.tooth(1) == pairs[std::size_t(r)].first &&
+            p.cand[c].point.tooth(2) == pairs[std::size_t(r)].second)
+          idx.push_back(int(c)), row.push_back(r);
+    const int m = int(idx.size());
+    Eigen::MatrixXd Ws(m, m), P = Eigen::MatrixXd::Zero(n, m);
+    for (int i = 0; i < m; ++i)
       {
-        arm[i] = p.a[idx[std::size_t(i)]];
-        for (int j = 0; j < n; ++j)
-          Wp(i, j) = p.W(idx[std::size_t(i)], idx[std::size_t(j)]);
+        P(row[std::size_t(i)], i) = -p.a[idx[std::size_t(i)]];
+        for (int j = 0; j < m; ++j)
+          Ws(i, j) = p.W(idx[std::size_t(i)], idx[std::size_t(j)]);
       }
-    // Minimum over distributions of the pair's torque of lambda^T W lambda / T^2.
-    const double kappa = n > 0 ? 1.0 / arm.dot(Wp.ldlt().solve(arm)) : 0.0;
-    kappa_[key] = kappa;
-    return kappa;
+    // min over lambda with pair torques tau of lambda^T W lambda = tau^T (P W^-1 P^T)^-1 tau:
+    // P W^-1 P^T is the section's stiffness at the level of its tooth pairs [N m/rad].
+    Eigen::MatrixXd G = P * Ws.ldlt().solve(P.transpose());
+    section_.emplace(std::move(key), G);
+    return G;
   }
 
   void SlicedPair::couple(System &s, const std::vector<Sub> &sub) const
@@ -190,68 +113,101 @@ namespace gearfem::helical
       return;
     const int N     = o_.slices;
     const double dz = o_.helix.face_width / N;
-    // Per tooth pair and slice: sum of weights and of weight x stiffness per unit width of
-    // the sub-slices in which the pair has candidates.
-    std::map<long, std::pair<Eigen::VectorXd, Eigen::VectorXd>> acc;
-    std::set<std::pair<long, int>> seen;
     for (int i = 0; i < s.m; ++i)
+      s.pair_index.try_emplace(s.pair[std::size_t(i)], int(s.pair_index.size()));
+    const int P = int(s.pair_index.size());
+    s.n_pairs   = P;
+    // Each slice's section stiffness over the tooth pairs it touches with: the sum over its
+    // sub-slices of weight x the stored section's pair-level stiffness (parallel springs).
+    s.K.assign(std::size_t(N), Eigen::MatrixXd::Zero(P, P));
+    for (const Sub &u : sub)
       {
-        const int j = s.sub[std::size_t(i)];
-        if (!seen.insert({s.pair[std::size_t(i)], j}).second)
+        std::map<long, std::pair<int, int>> labels; // absolute key -> stored labels
+        for (const int c : u.keep)
+          {
+            const auto &pt = u.p->cand[std::size_t(c)].point;
+            const long key = long(((pt.tooth(1) - u.wrap) % z_[0] + z_[0]) % z_[0]) * z_[1] +
+                             ((pt.tooth(2) + u.wrap) % z_[1] + z_[1]) % z_[1];
+            labels.emplace(key, std::make_pair(pt.tooth(1), pt.tooth(2)));
+          }
+        std::vector<std::pair<int, int>> stored;
+        std::vector<int> q;
+        for (const auto &[key, t] : labels)
+          stored.push_back(t), q.push_back(s.pair_index.at(key));
+        if (stored.empty())
           continue;
-        const Sub &u = sub[std::size_t(j)];
-        const auto &pt = u.p->cand[std::size_t(u.keep[std::size_t(i - u.first)])].point;
-        const double kappa = pair_compliance(*u.p, pt.tooth(1), pt.tooth(2));
-        auto &[w, k] = acc.try_emplace(s.pair[std::size_t(i)], Eigen::VectorXd::Zero(N), Eigen::VectorXd::Zero(N))
-                         .first->second;
-        if (kappa > 0)
-          w[u.slice] += u.weight, k[u.slice] += u.weight / (o_.helix.face_width * kappa);
+        const Eigen::MatrixXd G = section_stiffness(*u.p, stored);
+        for (std::size_t r = 0; r < q.size(); ++r)
+          for (std::size_t t = 0; t < q.size(); ++t)
+            s.K[std::size_t(u.slice)](q[r], q[t]) += u.weight * G(Eigen::Index(r), Eigen::Index(t));
       }
-    for (const auto &[key, wk] : acc)
+    // The tooth is there where its pair does not touch: the nearest slice's stiffness of the
+    // pair (diagonal) carries the coupling through those slices.
+    std::vector<std::vector<char>> present(std::size_t(N), std::vector<char>(std::size_t(P), 0));
+    Eigen::MatrixXd d(N, P); // stiffness of each pair's section per slice
+    for (int q = 0; q < P; ++q)
       {
-        const auto &[w, ksum] = wk;
-        Eigen::VectorXd K = Eigen::VectorXd::Zero(N);
-        std::vector<int> present;
+        std::vector<int> on;
         for (int k = 0; k < N; ++k)
-          if (w[k] > 0)
-            K[k] = ksum[k] / w[k] * dz, present.push_back(k);
-        if (present.empty())
-          continue;
-        for (int k = 0; k < N; ++k) // the tooth is there where the pair does not touch: nearest stiffness
-          if (!(w[k] > 0))
-            {
-              int best = present.front();
-              for (const int p : present)
-                if (std::abs(p - k) < std::abs(best - k))
-                  best = p;
-              K[k] = K[best];
-            }
-        Eigen::MatrixXd A = K.asDiagonal();
+          if (s.K[std::size_t(k)](q, q) > 0)
+            on.push_back(k), present[std::size_t(k)][std::size_t(q)] = 1;
+        for (int k = 0; k < N; ++k)
+          {
+            int best = on.front();
+            for (const int p : on)
+              if (std::abs(p - k) < std::abs(best - k))
+                best = p;
+            d(k, q) = s.K[std::size_t(best)](q, q);
+            if (!present[std::size_t(k)][std::size_t(q)])
+              s.K[std::size_t(k)](q, q) = d(k, q);
+          }
+      }
+    const int n = N * P;
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+    for (int k = 0; k < N; ++k)
+      A.block(k * P, k * P, P, P) = s.K[std::size_t(k)];
+    for (int q = 0; q < P; ++q)
+      if (o_.coupling == Coupling::shear) // a Pasternak layer between neighbours
         for (int k = 0; k + 1 < N; ++k)
           {
-            const double G = l * l * std::sqrt(K[k] * K[k + 1]) / (dz * dz);
-            A(k, k) += G, A(k + 1, k + 1) += G, A(k, k + 1) -= G, A(k + 1, k) -= G;
+            const double G = l * l * std::sqrt(d(k, q) * d(k + 1, q)) / (dz * dz);
+            const int a = k * P + q, b = (k + 1) * P + q;
+            A(a, a) += G, A(b, b) += G, A(a, b) -= G, A(b, a) -= G;
           }
-        Eigen::MatrixXd dC = A.ldlt().solve(Eigen::MatrixXd::Identity(N, N));
-        for (int k = 0; k < N; ++k)
-          dC(k, k) -= 1.0 / K[k];
-        s.dC[key] = std::move(dC);
-        s.K[key]  = K;
-      }
-    std::map<long, std::vector<int>> members;
-    for (int i = 0; i < s.m; ++i)
-      members[s.pair[std::size_t(i)]].push_back(i);
-    for (const auto &[key, idx] : members)
+      else // bending: EI (w'')^2 / 2 along the face, EI = k l^4 / 4, free ends
+        for (int k = 0; k + 2 < N; ++k)
+          {
+            const double c = std::pow(l / dz, 4) * std::cbrt(d(k, q) * d(k + 1, q) * d(k + 2, q)) / 4;
+            const int i[3]    = {k * P + q, (k + 1) * P + q, (k + 2) * P + q};
+            const double e[3] = {1, -2, 1};
+            for (int r = 0; r < 3; ++r)
+              for (int t = 0; t < 3; ++t)
+                A(i[r], i[t]) += c * e[r] * e[t];
+          }
+    // dC = (K + B)^-1 - K^-1 on the pairs each slice touches with: negative semi-definite.
+    s.dC = A.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+    for (int k = 0; k < N; ++k)
       {
-        const auto it = s.dC.find(key);
-        if (it == s.dC.end())
-          continue;
-        const Eigen::MatrixXd &dC = it->second;
-        for (const int i : idx)
-          for (const int j : idx)
-            s.W(i, j) += s.a[i] * s.a[j] *
-                         dC(sub[std::size_t(s.sub[std::size_t(i)])].slice, sub[std::size_t(s.sub[std::size_t(j)])].slice);
+        std::vector<int> on;
+        for (int q = 0; q < P; ++q)
+          if (present[std::size_t(k)][std::size_t(q)])
+            on.push_back(q);
+        const int m = int(on.size());
+        Eigen::MatrixXd Kp(m, m);
+        for (int r = 0; r < m; ++r)
+          for (int t = 0; t < m; ++t)
+            Kp(r, t) = s.K[std::size_t(k)](on[std::size_t(r)], on[std::size_t(t)]);
+        const Eigen::MatrixXd C = Kp.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
+        for (int r = 0; r < m; ++r)
+          for (int t = 0; t < m; ++t)
+            s.dC(k * P + on[std::size_t(r)], k * P + on[std::size_t(t)]) -= C(r, t);
       }
+    std::vector<int> at(std::size_t(s.m));
+    for (int i = 0; i < s.m; ++i)
+      at[std::size_t(i)] = s.index(sub[std::size_t(s.sub[std::size_t(i)])].slice, s.pair[std::size_t(i)]);
+    for (int i = 0; i < s.m; ++i)
+      for (int j = 0; j < s.m; ++j)
+        s.W(i, j) += s.a[i] * s.a[j] * s.dC(at[std::size_t(i)], at[std::size_t(j)]);
   }
 
   HelicalResult SlicedPair::solve(double phi1, double torque) const
@@ -331,7 +287,7 @@ namespace gearfem::helical
             s.arm = s.a + s.curvature.cwiseProduct(dq);
             const Eigen::VectorXd gl =
               s.ghat + s.a * q + 0.5 * s.curvature.cwiseProduct(dq.cwiseProduct(dq)) - s.arm * q;
-            s.solution = pdas(s.W, s.D, s.arm, gl, torque, lambda0, 400);
+            s.solution = contact::solve_ncp_spd(s.W, s.D, s.arm, gl, torque, q, lambda0, 400);
             iterations += s.solution.iterations;
             if (!s.solution.ok)
               throw SolverError(where(s.solution.why));
@@ -362,13 +318,7 @@ namespace gearfem::helical
         if (changed)
           continue;
         // Candidates left out that would penetrate join the problem.
-        std::map<long, Eigen::VectorXd> tau;
-        for (int i = 0; i < m; ++i)
-          if (s.dC.count(s.pair[std::size_t(i)]))
-            {
-              auto &t = tau.try_emplace(s.pair[std::size_t(i)], Eigen::VectorXd::Zero(N)).first->second;
-              t[sub[std::size_t(s.sub[std::size_t(i)])].slice] -= s.a[i] * lambda[i];
-            }
+        const Eigen::VectorXd shift = s.coupled() ? Eigen::VectorXd(s.dC * s.pair_torques(sub, lambda)) : Eigen::VectorXd();
         for (auto &u : sub)
           {
             const auto &p = *u.p;
@@ -386,8 +336,8 @@ namespace gearfem::helical
                 for (int r = 0; r < int(u.keep.size()); ++r)
                   g += p.W(Eigen::Index(c), u.keep[std::size_t(r)]) * lambda[u.first + r] / u.weight;
                 const long key = pair_key(p.cand[c].point.tooth(1), p.cand[c].point.tooth(2), u.wrap);
-                if (const auto it = s.dC.find(key); it != s.dC.end())
-                  g -= p.a[Eigen::Index(c)] * it->second.row(u.slice).dot(tau.at(key));
+                if (s.coupled() && s.pair_index.count(key))
+                  g -= p.a[Eigen::Index(c)] * shift[s.index(u.slice, key)];
                 if (g < 0)
                   add.push_back(int(c));
               }

@@ -7,18 +7,22 @@
 // into two sub-slices at those positions, their widths in proportion to the distance (the
 // section's compliance interpolated linearly in the roll angle; exact on the grid).
 //
-// Coupling across the face (Pasternak foundation; Ajmi & Velex 2005, Mech. Mach. Theory 40,
-// 173-190, after the elastic-foundation view of the tooth of Weber/Banaschek): the sections
-// of one tooth pair are joined by a shear layer. For each tooth pair, with K_k the stiffness
-// of its section in slice k (the global part: the pair's minimum compliance over its stored
-// candidates, which leaves out the local Hertzian flattening of the actual patch) and a shear
-// stiffness G_k,k+1 = l^2 sqrt(K_k K_k+1) / dz^2 between neighbours, the deflections of the
-// pair along the face are w = (K + G L)^-1 F instead of K^-1 F (L the chain Laplacian with free
-// ends). The correction (K + G L)^-1 - K^-1, which is negative semi-definite, is added to the
-// Delassus operator through the arms of the pair's candidates, so that the coupled operator
-// stays positive definite. A point load on the shear layer spreads as exp(-|z|/l) / (2 l): the
-// default l = m_n matches the second moment of Wellauer & Seireg's cantilever-plate moment
-// kernel (1960) for a load about 1.4 m_n above the root. l = 0: uncoupled slices (Winkler).
+// Coupling across the face: for each tooth pair, with K_k the stiffness of its section in slice
+// k (the global part: the pair's minimum compliance over its stored candidates, which leaves
+// out the local Hertzian flattening of the actual patch), the deflections of the pair along
+// the face are w = (K + B)^-1 F instead of K^-1 F, B the coupling of neighbouring sections:
+// - bending (default): the sections form a beam along the face on their own elastic
+//   foundation (Hetenyi, Beams on elastic foundation, 1946), EI = k l^4 / 4 with free ends, so
+//   that a point load spreads over an effective width 2 l (beta = 1/l) while a uniform load and
+//   a rigid tilt of the tooth (a misalignment) cost nothing;
+// - shear: a Pasternak layer between neighbours (as Ajmi & Velex 2005, Mech. Mach. Theory 40,
+//   173-190), G = l^2 sqrt(K_k K_k+1) / dz^2, a point load spreading as exp(-|z|/l) / (2 l);
+//   its free ends carry an edge force wherever the deflection has a slope.
+// The correction (K + B)^-1 - K^-1, negative semi-definite, is added to the Delassus operator
+// through the arms of the pair's candidates, so the coupled operator stays positive definite.
+// The default l = m_n: Wellauer & Seireg's cantilever-plate kernel (J. Eng. Ind. 82, 1960)
+// spreads a load at height x over an effective width 2 x, and a load at the pitch circle sits
+// about one module above the critical root section. l = 0: uncoupled slices (Winkler).
 //
 // All slices share the rigid rotation of the pinion; the torque is carried by their sum; the
 // contact problem of all slices together is solved by a primal-dual active set on the stored
@@ -91,6 +95,7 @@ namespace gearfem::helical
   {
     Helix helix;
     int slices = 21;
+    Coupling coupling = Coupling::bending;
     double coupling_length = 0; ///< l [m], >= 0
     LeadModification lead;
     double alpha_wt = 0;        ///< working transverse pressure angle [rad] (lead_gap)
@@ -113,7 +118,10 @@ namespace gearfem::helical
     struct Sub;
     struct System;
     std::vector<Sub> subs(double phi1) const;
-    double pair_compliance(const contact::CondensedPosition &p, int t1, int t2) const;
+    /// The stored section's stiffness at the level of the given tooth pairs (stored labels):
+    /// P W^-1 P^T over their stored candidates [N m/rad] (cached).
+    Eigen::MatrixXd section_stiffness(const contact::CondensedPosition &p,
+                                      const std::vector<std::pair<int, int>> &pairs) const;
     void couple(System &s, const std::vector<Sub> &sub) const;
     HelicalResult evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const;
     const condensed::CondensedCycle &cycle_;
@@ -122,6 +130,6 @@ namespace gearfem::helical
     condensed::Resolver resolver_;
     double rb1_ = 0;
     int z_[2] = {0, 0};
-    mutable std::map<std::tuple<const void *, int, int>, double> kappa_;
+    mutable std::map<std::pair<const void *, std::vector<std::pair<int, int>>>, Eigen::MatrixXd> section_;
   };
 } // namespace gearfem::helical

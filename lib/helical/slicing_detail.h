@@ -1,6 +1,7 @@
 #pragma once
 // Internals of helical/slicing.h shared by its translation units (slicing.cc solves,
 // slicing_post.cc evaluates). Not part of the module's interface.
+#include "contact/ncp.h"
 #include "helical/slicing.h"
 
 #include <Eigen/Dense>
@@ -11,18 +12,6 @@
 
 namespace gearfem::helical
 {
-  /// The solution of the coupled complementarity problem on a fixed linearisation.
-  struct Pdas
-  {
-    bool ok = false;
-    std::string why;
-    Eigen::VectorXd lambda, gap;
-    double q = 0, tangent = 0;
-    std::vector<char> active;
-    int iterations = 0;
-  };
-
-
   /// A slice, or the part of one, on one stored position.
   struct SlicedPair::Sub
   {
@@ -44,10 +33,24 @@ namespace gearfem::helical
     Eigen::VectorXd a, curvature, q_build, ghat, D, lambda0;
     std::vector<int> sub;   ///< sub-slice of each unknown
     std::vector<long> pair; ///< absolute tooth pair key of each unknown
-    /// Per tooth pair: the coupling correction over the slices (N x N; empty uncoupled).
-    std::map<long, Eigen::MatrixXd> dC;
-    std::map<long, Eigen::VectorXd> K; ///< per tooth pair: section stiffness of each slice [N m/rad]
-    Pdas solution;
+    /// The coupling over (slice, tooth pair), index slice * n_pairs + pair_index: the correction
+    /// (K + B)^-1 - K^-1 [rad/(N m)] (empty: uncoupled), and each slice's section stiffness
+    /// over the pairs [N m/rad].
+    std::map<long, int> pair_index;
+    int n_pairs = 0;
+    Eigen::MatrixXd dC;
+    std::vector<Eigen::MatrixXd> K;
+    bool coupled() const { return dC.size() > 0; }
+    int index(int slice, long key) const { return slice * n_pairs + pair_index.at(key); }
+    /// The contact torque of each (slice, pair) [N m] under candidate forces lambda.
+    Eigen::VectorXd pair_torques(const std::vector<SlicedPair::Sub> &sub, const Eigen::VectorXd &lambda) const
+    {
+      Eigen::VectorXd t = Eigen::VectorXd::Zero(Eigen::Index(K.size()) * n_pairs);
+      for (int i = 0; i < m; ++i)
+        t[index(sub[std::size_t(this->sub[std::size_t(i)])].slice, pair[std::size_t(i)])] -= a[i] * lambda[i];
+      return t;
+    }
+    contact::NcpResult solution;
     double q = 0;
     Eigen::VectorXd arm;
     int iterations = 0;

@@ -14,12 +14,6 @@ namespace gearfem::helical
   namespace
   {
     int mod(long a, long n) { return int(((a % n) + n) % n); }
-    contact::Vec2 rotate_about(const contact::Vec2 &x, const contact::Vec2 &c, double angle)
-    {
-      const double cs = std::cos(angle), sn = std::sin(angle);
-      const contact::Vec2 d = x - c;
-      return c + contact::Vec2(cs * d.x() - sn * d.y(), sn * d.x() + cs * d.y());
-    }
   } // namespace
 
   HelicalResult SlicedPair::evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const
@@ -87,13 +81,7 @@ namespace gearfem::helical
             for (const auto &[jj, coef] : p.pressure[std::size_t(c)])
               if (at[std::size_t(jj)] >= 0)
                 pt.pressure += coef * lam[at[std::size_t(jj)]] / u.weight;
-            if (pt.slave_body == 1)
-              pt.x = rotate_about(pt.x, o1, dq);
-            else
-              {
-                pt.master_point = rotate_about(pt.master_point, o1, dq);
-                pt.normal       = rotate_about(pt.normal, contact::Vec2::Zero(), dq);
-              }
+            contact::turn_body1(pt, o1, dq);
             if (s.solution.active[std::size_t(i)])
               ++sol.n_active;
             sol.max_penetration = std::max(sol.max_penetration, -pt.gap);
@@ -119,23 +107,32 @@ namespace gearfem::helical
           }
       }
     // The fillet of a section bends under the load its section carries: the contact load plus
-    // what the shear layer brings from its neighbours, F = tau + K (dC tau) (zero uncoupled),
-    // at the stress per unit load of the section's own contact (or of the nearest slice where
-    // the pair is loaded).
+    // what the coupling brings from its neighbours, F = tau + K (dC tau) (tau uncoupled), at the
+    // stress per unit load of the section's own contact (or of the nearest slice where the pair
+    // carries a tenth of its largest load or more: a lightly loaded section's fillet stress comes
+    // mostly from the neighbouring tooth's load).
+    Eigen::VectorXd tq, Fq;
+    if (s.coupled())
+      {
+        tq = s.pair_torques(sub, lam);
+        const Eigen::VectorXd shift = s.dC * tq;
+        Fq = tq;
+        const int P = s.n_pairs;
+        for (int k = 0; k < N; ++k)
+          Fq.segment(k * P, P) += s.K[std::size_t(k)] * shift.segment(k * P, P);
+      }
     for (const auto &[key, t] : tau)
       {
         Eigen::VectorXd F = t;
-        if (const auto it = s.dC.find(key); it != s.dC.end())
-          F += s.K.at(key).cwiseProduct(it->second * t);
+        if (s.coupled())
+          for (int k = 0; k < N; ++k)
+            F[k] = Fq[s.index(k, key)];
         for (int g = 0; g < 2; ++g)
           {
             const auto it = sig[g].find(key);
             if (it == sig[g].end())
               continue;
             const Eigen::VectorXd &sg = it->second;
-            // A lightly loaded section's fillet stress comes mostly from the neighbouring
-            // tooth's load: take the stress per unit load where the pair carries a tenth of
-            // its largest load or more.
             const double floor = 0.1 * t.maxCoeff();
             for (int k = 0; k < N; ++k)
               {

@@ -6,10 +6,11 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
-prm() { # prm NAME BETA SLICES COUPLING MISALIGNMENT: the demo pair with a Helical section
+prm() { # prm NAME BETA SLICES COUPLING_LENGTH MISALIGNMENT [COUPLING]: the demo pair with a Helical section
   { cat "$root/inputs/demo.prm"
     printf 'subsection Solve\n  set VTU = none\n  set Plots = false\nend\n'
     printf 'subsection Helical\n  set Rack section = transverse\n  set Helix angle = %s\n  set Slices = %s\n' "$2" "$3"
+    printf '  set Coupling = %s\n' "${6:-bending}"
     printf '  set Coupling length = %s\n  set Misalignment = %s\nend\n' "$4" "$5"; } > "$out/$1.prm"
 }
 run() { # run NAME [args]: gearfem helical on $out/NAME.prm into $out/NAME
@@ -33,10 +34,12 @@ for e in 0 0.25 0.5 0.75 1 1.25 1.5 1.75 2; do
   prm "eps_$e" "$beta" 21 -1 0
   run "eps_$e" --condensed "$cycle"
 done
-# A misaligned spur face (beta 0): f_Sigma_beta 10 and 25 um, coupled (default) and uncoupled.
+# A misaligned spur face (beta 0): f_Sigma_beta 10 and 25 um; bending coupling (default),
+# uncoupled, and the shear layer.
 for f in 10 25; do
   prm "mis_$f" 0 21 -1 "$f"; run "mis_$f" --condensed "$cycle"
   prm "mis_${f}_winkler" 0 21 0 "$f"; run "mis_${f}_winkler" --condensed "$cycle"
+  prm "mis_${f}_shear" 0 21 -1 "$f" shear; run "mis_${f}_shear" --condensed "$cycle"
 done
 echo "== iso_tr: ISO/TR 6336-30 example 1 (m_n 8, z 17/103, beta 15.8 deg), its own cycle"
 "$gearfem" helical "$root/inputs/helical_iso_tr.prm" --output-dir "$out/iso_tr" > "$out/iso_tr.log" 2>&1 ||

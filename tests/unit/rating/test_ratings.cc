@@ -159,6 +159,24 @@ TEST(Iso6336_1, StiffnessOfStandardSteelPairs)
     }
 }
 
+TEST(Iso6336_1, HelicalStiffnessOfIsoTr6336_30Example1)
+{
+  // ISO/TR 6336-30:2017 calculation example 1 (m_n 8, alpha_n 20 deg, beta 15.8 deg, z 17/103,
+  // x 0.145/0, basic rack profile D: h_fP 1.4 m_n, F_t/b above 100 N/mm): the published c'_th
+  // 17.8558, c' 12.3705 and c_gamma_alpha 17.4648 N/(mm um) (values as quoted in
+  // validation/helical/iso_reference.py). eps_alpha 1.54934 from ISO 21771 for a = 500 mm; the
+  // published c_gamma_alpha implies 1.54909, hence 2e-4 there.
+  gearfem::rating::iso6336::StiffnessInput in;
+  in.z1 = 17, in.z2 = 103, in.x1 = 0.145, in.x2 = 0;
+  in.beta = 15.8 * deg, in.alpha_n = 20 * deg, in.module = 8e-3;
+  in.h_fP1 = in.h_fP2 = 1.4;
+  in.eps_alpha = 1.54934;
+  const auto s = gearfem::rating::iso6336::mesh_stiffness(in);
+  EXPECT_NEAR(s.c_th, 17.85584, 2e-4);
+  EXPECT_NEAR(s.c_prime, 12.37047, 2e-4);
+  EXPECT_NEAR(s.c_gamma_alpha / 17.46485, 1.0, 2e-4);
+}
+
 TEST(Iso6336_1, ShiftDependenceOfSingleStiffness)
 {
   // q' (ISO 6336-1 eq. 71): positive shift on the pinion stiffens the pair (dq'/dx1 =
