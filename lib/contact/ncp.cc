@@ -89,6 +89,7 @@ namespace gearfem::contact
                     return r;
                   }
                 r.q = (value - K.col(n).head(n).dot(x1)) / den;
+                r.tangent = den; // a^T (W_AA + D)^-1 a of this active set
                 for (int i = 0; i < n; ++i)
                   r.lambda[A[i]] = -x1[i] - x2[i] * r.q;
               }
@@ -142,7 +143,7 @@ namespace gearfem::contact
                 den += r.lambda[k] * r.lambda[k];
               }
             r.complementarity = den > 0 ? std::sqrt(num / den) : 0.0;
-            if (n > 0)
+            if (n > 0 && !(spd && control == Control::load)) // spd: the tangent is the Schur complement above
               {
                 Eigen::MatrixXd K(n, n);
                 Eigen::VectorXd aa(n), afa(n);

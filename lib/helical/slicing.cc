@@ -23,7 +23,7 @@ namespace gearfem::helical
     long floor_div(long a, long n) { return a >= 0 ? a / n : -((-a + n - 1) / n); }
     /// Candidates first taken into the coupled problem: loaded at the build, or within this
     /// gap of contact there; the others join where they would penetrate.
-    constexpr double initial_gap = 10e-6;
+    constexpr double initial_gap = 1e-6;
 
   } // namespace
 
@@ -113,26 +113,29 @@ namespace gearfem::helical
       return;
     const int N     = o_.slices;
     const double dz = o_.helix.face_width / N;
-    for (int i = 0; i < s.m; ++i)
-      s.pair_index.try_emplace(s.pair[std::size_t(i)], int(s.pair_index.size()));
+    // The tooth pairs of every stored configuration in use, all of their candidates (not only
+    // those in the problem), so that the coupling does not depend on which candidates were
+    // taken in: each slice's stiffness over its tooth pairs is the sum over its sub-slices of
+    // weight x the stored section's pair-level stiffness (parallel springs).
+    std::vector<std::map<long, std::pair<int, int>>> labels(sub.size()); // absolute key -> stored labels
+    for (std::size_t j = 0; j < sub.size(); ++j)
+      for (const auto &cd : sub[j].p->cand)
+        {
+          const auto &pt = cd.point;
+          const long key = long(((pt.tooth(1) - sub[j].wrap) % z_[0] + z_[0]) % z_[0]) * z_[1] +
+                           ((pt.tooth(2) + sub[j].wrap) % z_[1] + z_[1]) % z_[1];
+          labels[j].emplace(key, std::make_pair(pt.tooth(1), pt.tooth(2)));
+          s.pair_index.try_emplace(key, int(s.pair_index.size()));
+        }
     const int P = int(s.pair_index.size());
     s.n_pairs   = P;
-    // Each slice's section stiffness over the tooth pairs it touches with: the sum over its
-    // sub-slices of weight x the stored section's pair-level stiffness (parallel springs).
     s.K.assign(std::size_t(N), Eigen::MatrixXd::Zero(P, P));
-    for (const Sub &u : sub)
+    for (std::size_t j = 0; j < sub.size(); ++j)
       {
-        std::map<long, std::pair<int, int>> labels; // absolute key -> stored labels
-        for (const int c : u.keep)
-          {
-            const auto &pt = u.p->cand[std::size_t(c)].point;
-            const long key = long(((pt.tooth(1) - u.wrap) % z_[0] + z_[0]) % z_[0]) * z_[1] +
-                             ((pt.tooth(2) + u.wrap) % z_[1] + z_[1]) % z_[1];
-            labels.emplace(key, std::make_pair(pt.tooth(1), pt.tooth(2)));
-          }
+        const Sub &u = sub[j];
         std::vector<std::pair<int, int>> stored;
         std::vector<int> q;
-        for (const auto &[key, t] : labels)
+        for (const auto &[key, t] : labels[j])
           stored.push_back(t), q.push_back(s.pair_index.at(key));
         if (stored.empty())
           continue;
