@@ -111,7 +111,15 @@ namespace gearfem::helical
     const double tmax = *std::max_element(run.torques.begin(), run.torques.end());
     condensed::CondensedCycle cycle;
     if (!ro.cycle_file.empty())
-      cycle = condensed::read_cycle(ro.cycle_file);
+      {
+        cycle = condensed::read_cycle(ro.cycle_file);
+        for (const double T : run.torques)
+          if (T < cycle.torque_lo * (1 - 1e-12) || T > cycle.torque_hi * (1 + 1e-12))
+            throw InputError("Solve/Torques", to_string_g(T) + " N m",
+                             to_string_g(cycle.torque_lo) + " to " + to_string_g(cycle.torque_hi) +
+                               " N m (the torque range of the condensed cycle " + ro.cycle_file.string() + ")",
+                             "build a cycle for this torque (without --condensed, or with Condense/Torque range)");
+      }
     else
       {
         const auto t0   = Clock::now();

@@ -216,6 +216,7 @@ namespace gearfem::helical
   HelicalResult SlicedPair::solve(double phi1, double torque) const
   {
     require_greater("Solve/Torques", torque, 0.0, "N m");
+    (void)cycle_.at(0, torque); // SolverError naming the cycle's torque range outside it
     const auto t0  = Clock::now();
     const int N    = o_.slices;
     const double b = o_.helix.face_width;

@@ -110,7 +110,9 @@ namespace gearfem::helical
     /// cycle's). Both must outlive this object.
     SlicedPair(const condensed::CondensedCycle &cycle, const solve::GearContactInput &section, SlicingOptions options);
     /// The pair at roll angle phi1 of its middle section under pinion torque T1 > 0 [N m].
-    /// SolverError when the complementarity problem fails or leaves the stored candidates.
+    /// SolverError outside the cycle's torque range, and when the complementarity problem
+    /// fails or leaves the stored candidates. A slice whose own load per unit width lies
+    /// outside the range takes the nearest stored scene.
     HelicalResult solve(double phi1, double torque) const;
     const SlicingOptions &options() const { return o_; }
 

@@ -205,6 +205,9 @@ TEST(SlicedPair, HelicalSlicesCarryTheTorqueAlongContiguousContactLines)
       slo = std::min(slo, s.result.ste), shi = std::max(shi, s.result.ste);
     }
   EXPECT_LT(hi - lo, 0.5 * (shi - slo));
+  // A torque beyond the cycle's range is a named error, not a number.
+  EXPECT_THROW(pair.solve(b.cycle.positions[0].second, 5000), SolverError);
+  EXPECT_THROW(pair.solve(b.cycle.positions[0].second, 10), SolverError);
 }
 
 TEST(SlicedPair, UncoupledMisalignedSpurFollowsWinkler)
