@@ -1,6 +1,7 @@
 // Active-set and semismooth Newton solvers of the contact complementarity problem.
 #include "contact/ncp.h"
 
+#include <cmath>
 #include <set>
 
 namespace gearfem::contact
@@ -8,11 +9,9 @@ namespace gearfem::contact
   /// min over lambda >= 0 (and q for load control) of the linear complementarity problem
   /// g = ghat + a q + W lambda, lambda >= 0, g + D lambda >= 0, lambda (g + D lambda) = 0,
   /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
-  namespace
-  {
-  NcpResult solve_impl(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
-                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                       const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in, bool spd)
+  NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
+                      const Eigen::VectorXd &ghat, Control control, double value, double q0,
+                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in)
   {
     const int m = int(W.rows());
     const Eigen::VectorXd &af = af_in.size() == m ? af_in : a;
@@ -72,39 +71,15 @@ namespace gearfem::contact
               }
             K(n, n) = 0;
             rhs[n]  = -value;
-            if (spd)
+            const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
+            if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
               {
-                // lambda = -M^-1 (ghat + a q), a^T lambda = -T: q from the Schur complement.
-                const Eigen::LLT<Eigen::MatrixXd> llt(K.topLeftCorner(n, n));
-                if (llt.info() != Eigen::Success)
-                  {
-                    r.why = "the contact operator is not positive definite on the active set";
-                    return r;
-                  }
-                const Eigen::VectorXd x1 = llt.solve(-rhs.head(n)), x2 = llt.solve(K.col(n).head(n));
-                const double den = K.col(n).head(n).dot(x2);
-                if (!(den > 0))
-                  {
-                    r.why = "the active nodes cannot carry the load";
-                    return r;
-                  }
-                r.q = (value - K.col(n).head(n).dot(x1)) / den;
-                r.tangent = den; // a^T (W_AA + D)^-1 a of this active set
-                for (int i = 0; i < n; ++i)
-                  r.lambda[A[i]] = -x1[i] - x2[i] * r.q;
+                r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
+                return r;
               }
-            else
-              {
-                const Eigen::VectorXd x = K.fullPivLu().solve(rhs);
-                if (!x.allFinite() || !(K * x).isApprox(rhs, 1e-8))
-                  {
-                    r.why = "singular contact system on the active set (the active nodes cannot carry the load)";
-                    return r;
-                  }
-                for (int i = 0; i < n; ++i)
-                  r.lambda[A[i]] = x[i];
-                r.q = x[n];
-              }
+            for (int i = 0; i < n; ++i)
+              r.lambda[A[i]] = x[i];
+            r.q = x[n];
           }
         else if (n > 0)
           {
@@ -143,7 +118,7 @@ namespace gearfem::contact
                 den += r.lambda[k] * r.lambda[k];
               }
             r.complementarity = den > 0 ? std::sqrt(num / den) : 0.0;
-            if (n > 0 && !(spd && control == Control::load)) // spd: the tangent is the Schur complement above
+            if (n > 0)
               {
                 Eigen::MatrixXd K(n, n);
                 Eigen::VectorXd aa(n), afa(n);
@@ -170,19 +145,128 @@ namespace gearfem::contact
     r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
     return r;
   }
+  namespace
+  {
+    /// W_AA + D_A of a dense W, factorised by Cholesky.
+    class DenseSpd : public SpdOperator
+    {
+    public:
+      DenseSpd(const Eigen::MatrixXd &W, const Eigen::VectorXd &D) : W_(W), D_(D) {}
+      Eigen::Index size() const override { return W_.rows(); }
+      double diagonal(Eigen::Index k) const override { return W_(k, k); }
+      Eigen::VectorXd apply(const Eigen::VectorXd &x) const override { return W_ * x; }
+      bool factorise(const std::vector<int> &A) override
+      {
+        const int n = int(A.size());
+        Eigen::MatrixXd M(n, n);
+        for (int i = 0; i < n; ++i)
+          {
+            for (int j = 0; j < n; ++j)
+              M(i, j) = W_(A[std::size_t(i)], A[std::size_t(j)]);
+            M(i, i) += D_[A[std::size_t(i)]];
+          }
+        llt_.compute(M);
+        return llt_.info() == Eigen::Success;
+      }
+      Eigen::VectorXd solve(const Eigen::VectorXd &y) const override { return llt_.solve(y); }
+
+    private:
+      const Eigen::MatrixXd &W_;
+      const Eigen::VectorXd &D_;
+      Eigen::LLT<Eigen::MatrixXd> llt_;
+    };
   } // namespace
 
-  NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
-                      const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in)
+  NcpResult solve_ncp_spd(SpdOperator &W, const Eigen::VectorXd &a, const Eigen::VectorXd &ghat, double load,
+                          const Eigen::VectorXd &lambda0, int max_iterations)
   {
-    return solve_impl(W, D, a, ghat, control, value, q0, lambda0, max_iterations, af_in, false);
+    const int m = int(W.size());
+    NcpResult r;
+    r.lambda = Eigen::VectorXd::Zero(m);
+    std::vector<char> active(std::size_t(m), 0);
+    bool any = false;
+    for (int k = 0; k < m; ++k)
+      if (lambda0.size() == m && lambda0[k] > 0)
+        active[std::size_t(k)] = 1, any = true;
+    if (!any)
+      {
+        // The node that closes first as q grows.
+        int best = -1;
+        double qmin = 1e300;
+        for (int k = 0; k < m; ++k)
+          if (a[k] < 0 && ghat[k] / -a[k] < qmin)
+            qmin = ghat[k] / -a[k], best = k;
+        if (best >= 0)
+          active[std::size_t(best)] = 1;
+      }
+    std::set<std::vector<char>> seen;
+    for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations)
+      {
+        std::vector<int> A;
+        for (int k = 0; k < m; ++k)
+          if (active[std::size_t(k)])
+            A.push_back(k);
+        const int n = int(A.size());
+        if (n == 0)
+          {
+            r.why = "no slave node can close its gap as the drive advances (no contact)";
+            return r;
+          }
+        if (!W.factorise(A))
+          {
+            r.why = "the contact operator is not positive definite on the active set";
+            return r;
+          }
+        // lambda_A = -M^-1 (ghat + a q), a^T lambda = -T: q from the Schur complement.
+        Eigen::VectorXd gA(n), aA(n);
+        for (int i = 0; i < n; ++i)
+          gA[i] = ghat[A[std::size_t(i)]], aA[i] = a[A[std::size_t(i)]];
+        const Eigen::VectorXd x1 = W.solve(gA), x2 = W.solve(aA);
+        const double den = aA.dot(x2);
+        if (!(den > 0))
+          {
+            r.why = "the active nodes cannot carry the load";
+            return r;
+          }
+        r.q = (load - aA.dot(x1)) / den;
+        r.lambda.setZero();
+        for (int i = 0; i < n; ++i)
+          r.lambda[A[std::size_t(i)]] = -x1[i] - x2[i] * r.q;
+        r.gap = ghat + a * r.q + W.apply(r.lambda);
+        std::vector<char> next(std::size_t(m), 0);
+        for (int k = 0; k < m; ++k)
+          next[std::size_t(k)] = r.lambda[k] - r.gap[k] / W.diagonal(k) > 0;
+        if (next == active)
+          {
+            r.ok      = true;
+            r.active  = active;
+            r.tangent = den; // dT/dq = a_A^T (W_AA + D_A)^-1 a_A
+            double num = 0, dd = 0;
+            for (int k = 0; k < m; ++k)
+              {
+                const double v = std::min(r.lambda[k], r.gap[k] / W.diagonal(k));
+                num += v * v;
+                dd += r.lambda[k] * r.lambda[k];
+              }
+            r.complementarity = dd > 0 ? std::sqrt(num / dd) : 0.0;
+            return r;
+          }
+        if (!seen.insert(active).second)
+          {
+            r.why = "the active set cycles";
+            return r;
+          }
+        active = next;
+      }
+    r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
+    return r;
   }
 
   NcpResult solve_ncp_spd(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
-                          const Eigen::VectorXd &ghat, double load, double q0, const Eigen::VectorXd &lambda0,
+                          const Eigen::VectorXd &ghat, double load, const Eigen::VectorXd &lambda0,
                           int max_iterations)
   {
-    return solve_impl(W, D, a, ghat, Control::load, load, q0, lambda0, max_iterations, Eigen::VectorXd(), true);
+    DenseSpd op(W, D);
+    return solve_ncp_spd(op, a, ghat, load, lambda0, max_iterations);
   }
 } // namespace gearfem::contact

@@ -33,12 +33,31 @@ namespace gearfem::contact
                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
                       const Eigen::VectorXd &lambda0, int max_iterations,
                       const Eigen::VectorXd &af = Eigen::VectorXd());
-  /// The same under load control for a symmetric positive definite W (no friction): the
-  /// bordered active-set system is solved through the Cholesky factor of the active block
-  /// (the Schur complement on q), a fraction of the cost of the general LU on large sets (the
-  /// coupled slices of helical/slicing.h). Fails (ok false) where the active block is not
-  /// positive definite.
+  /// A symmetric positive definite contact operator W (with its penalty compliance D on the
+  /// diagonal of the active systems) given by what the active-set loop needs of it, so that a
+  /// caller with structure (block-diagonal plus low rank: the coupled slices of
+  /// helical/slicing.h) solves its active systems without forming W.
+  class SpdOperator
+  {
+  public:
+    virtual ~SpdOperator() = default;
+    virtual Eigen::Index size() const = 0;
+    virtual double diagonal(Eigen::Index k) const = 0;                       ///< W_kk
+    virtual Eigen::VectorXd apply(const Eigen::VectorXd &x) const = 0;       ///< W x
+    /// Factorise W_AA + D_A of the active set A (ascending); false: not positive definite.
+    virtual bool factorise(const std::vector<int> &A) = 0;
+    /// (W_AA + D_A)^-1 y of the last factorised set (y in the order of A).
+    virtual Eigen::VectorXd solve(const Eigen::VectorXd &y) const = 0;
+  };
+
+  /// The linear complementarity problem under load control for a symmetric positive definite
+  /// W without friction: the primal-dual active set of solve_ncp with each bordered system
+  /// solved through (W_AA + D_A)^-1 (q from the Schur complement); the tangent is that Schur
+  /// complement. Fails (ok false) where the active block is not positive definite.
+  NcpResult solve_ncp_spd(SpdOperator &W, const Eigen::VectorXd &a, const Eigen::VectorXd &ghat, double load,
+                          const Eigen::VectorXd &lambda0, int max_iterations);
+  /// The same for a dense W and penalty compliance D (Cholesky of the active block).
   NcpResult solve_ncp_spd(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
-                          const Eigen::VectorXd &ghat, double load, double q0, const Eigen::VectorXd &lambda0,
+                          const Eigen::VectorXd &ghat, double load, const Eigen::VectorXd &lambda0,
                           int max_iterations);
 } // namespace gearfem::contact

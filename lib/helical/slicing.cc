@@ -205,12 +205,10 @@ namespace gearfem::helical
           for (int t = 0; t < m; ++t)
             s.dC(k * P + on[std::size_t(r)], k * P + on[std::size_t(t)]) -= C(r, t);
       }
-    std::vector<int> at(std::size_t(s.m));
+    // The coupled operator is W = blockdiag(W_j / weight_j) + U dC U^T, U(i, at_i) = a_i.
+    s.at.resize(std::size_t(s.m));
     for (int i = 0; i < s.m; ++i)
-      at[std::size_t(i)] = s.index(sub[std::size_t(s.sub[std::size_t(i)])].slice, s.pair[std::size_t(i)]);
-    for (int i = 0; i < s.m; ++i)
-      for (int j = 0; j < s.m; ++j)
-        s.W(i, j) += s.a[i] * s.a[j] * s.dC(at[std::size_t(i)], at[std::size_t(j)]);
+      s.at[std::size_t(i)] = s.index(sub[std::size_t(s.sub[std::size_t(i)])].slice, s.pair[std::size_t(i)]);
   }
 
   HelicalResult SlicedPair::solve(double phi1, double torque) const
@@ -253,7 +251,6 @@ namespace gearfem::helical
         for (auto &u : sub)
           u.first = s.m, s.m += int(u.keep.size());
         const int m = s.m;
-        s.W = Eigen::MatrixXd::Zero(m, m);
         s.a.resize(m), s.curvature.resize(m), s.q_build.resize(m), s.ghat.resize(m), s.D.resize(m), s.lambda0.resize(m);
         double q = 0;
         for (std::size_t j = 0; j < sub.size(); ++j)
@@ -261,11 +258,12 @@ namespace gearfem::helical
             const Sub &u = sub[j];
             const auto &p = *u.p;
             const int n   = int(u.keep.size());
+            Eigen::MatrixXd &B = s.block.emplace_back(n, n);
             for (int r = 0; r < n; ++r)
               {
                 const int c = u.keep[std::size_t(r)], i = u.first + r;
                 for (int t = 0; t < n; ++t)
-                  s.W(i, u.first + t) = p.W(c, u.keep[std::size_t(t)]) / u.weight;
+                  B(r, t) = p.W(c, u.keep[std::size_t(t)]) / u.weight;
                 s.a[i]         = p.a[c];
                 s.curvature[i] = p.curvature[c];
                 s.q_build[i]   = p.q_build;
@@ -281,6 +279,7 @@ namespace gearfem::helical
             q += u.weight * (p.load_build > 0 ? p.q_build * torque / p.load_build : p.q_build);
           }
         couple(s, sub);
+        SlicedOperator op(s, sub);
         // Newton on the curvature of the rigid gaps, the complementarity problem at each step.
         std::vector<char> prev;
         bool settled = false;
@@ -291,7 +290,7 @@ namespace gearfem::helical
             s.arm = s.a + s.curvature.cwiseProduct(dq);
             const Eigen::VectorXd gl =
               s.ghat + s.a * q + 0.5 * s.curvature.cwiseProduct(dq.cwiseProduct(dq)) - s.arm * q;
-            s.solution = contact::solve_ncp_spd(s.W, s.D, s.arm, gl, torque, q, lambda0, 400);
+            s.solution = contact::solve_ncp_spd(op, s.arm, gl, torque, lambda0, 400);
             iterations += s.solution.iterations;
             if (!s.solution.ok)
               throw SolverError(where(s.solution.why));

@@ -103,8 +103,12 @@ namespace gearfem::helical
     post::PostOptions post;
   };
 
+  class SlicedOperator;
+
   class SlicedPair
   {
+    friend class SlicedOperator;
+
   public:
     /// `section`: the transverse section whose `Solve` positions are grid.positions() (the
     /// cycle's). Both must outlive this object.

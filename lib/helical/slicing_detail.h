@@ -29,7 +29,8 @@ namespace gearfem::helical
   struct SlicedPair::System
   {
     int m = 0;
-    Eigen::MatrixXd W;
+    /// Per sub-slice, its block of the operator: the stored W on its candidates / weight.
+    std::vector<Eigen::MatrixXd> block;
     Eigen::VectorXd a, curvature, q_build, ghat, D, lambda0;
     std::vector<int> sub;   ///< sub-slice of each unknown
     std::vector<long> pair; ///< absolute tooth pair key of each unknown
@@ -39,6 +40,7 @@ namespace gearfem::helical
     std::map<long, int> pair_index;
     int n_pairs = 0;
     Eigen::MatrixXd dC;
+    std::vector<int> at; ///< (slice, pair) index of each unknown in dC
     std::vector<Eigen::MatrixXd> K;
     bool coupled() const { return dC.size() > 0; }
     int index(int slice, long key) const { return slice * n_pairs + pair_index.at(key); }
@@ -56,4 +58,38 @@ namespace gearfem::helical
     int iterations = 0;
   };
 
+
+  /// The coupled operator W = blockdiag(B_j) + U dC U^T (U(i, at_i) = a_i, the build arm) for
+  /// contact::solve_ncp_spd: each active system is solved through the Cholesky factors of the
+  /// sub-slices' active blocks and a dense system of the size of the coupling indices the
+  /// active set touches (Sherman-Morrison-Woodbury), never forming W.
+  class SlicedOperator : public contact::SpdOperator
+  {
+  public:
+    SlicedOperator(const SlicedPair::System &s, const std::vector<SlicedPair::Sub> &sub);
+    Eigen::Index size() const override { return s_.m; }
+    double diagonal(Eigen::Index k) const override;
+    Eigen::VectorXd apply(const Eigen::VectorXd &x) const override;
+    bool factorise(const std::vector<int> &A) override;
+    Eigen::VectorXd solve(const Eigen::VectorXd &y) const override;
+
+  private:
+    /// (B_AA + D_A)^-1 y blockwise.
+    Eigen::VectorXd block_solve(const Eigen::VectorXd &y) const;
+    const SlicedPair::System &s_;
+    std::vector<int> owner_, local_; ///< sub-slice of each unknown and its row in the block
+    struct Active
+    {
+      int j = 0;              ///< sub-slice
+      std::vector<int> rows;  ///< rows of its block in the active set
+      std::vector<int> pos;   ///< their positions in A
+      Eigen::LLT<Eigen::MatrixXd> llt;
+    };
+    std::vector<Active> active_;
+    std::vector<int> A_;
+    std::vector<int> col_; ///< coupling index -> column of the active coupling, -1
+    std::vector<int> cols_; ///< active coupling indices
+    Eigen::MatrixXd dCa_;
+    Eigen::PartialPivLU<Eigen::MatrixXd> F_;
+  };
 } // namespace gearfem::helical
