@@ -145,6 +145,7 @@ namespace gearfem::contact
     r.why = "the active set did not settle in " + std::to_string(max_iterations) + " iterations";
     return r;
   }
+
   namespace
   {
     /// W_AA + D_A of a dense W, factorised by Cholesky.
