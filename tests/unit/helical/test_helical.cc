@@ -210,6 +210,26 @@ TEST(SlicedPair, HelicalSlicesCarryTheTorqueAlongContiguousContactLines)
   EXPECT_THROW(pair.solve(b.cycle.positions[0].second, 10), SolverError);
 }
 
+TEST(SlicedPair, HandMirrorsTheFace)
+{
+  // An aligned pair of the other hand is the same pair seen from the other face: the same STE,
+  // the load of slice k that of slice N-1-k (mirror symmetry of the slicing and the coupling).
+  auto &b  = built();
+  auto o   = options(20, 21, -1);
+  auto ol  = o;
+  ol.helix.roll_per_length = -o.helix.roll_per_length;
+  const helical::SlicedPair right(b.cycle, b.in, o), left(b.cycle, b.in, ol);
+  for (std::size_t k = 0; k < b.cycle.positions.size(); k += 4)
+    {
+      const double phi = b.cycle.positions[k].second;
+      const auto r = right.solve(phi, 300), l = left.solve(phi, 300);
+      EXPECT_NEAR(l.ste, r.ste, 1e-9 * r.ste);
+      const std::size_t N = r.slices.size();
+      for (std::size_t i = 0; i < N; ++i)
+        EXPECT_NEAR(l.slices[i].load_per_width, r.slices[N - 1 - i].load_per_width, 1e-6 * r.normal_force / 0.02);
+    }
+}
+
 TEST(SlicedPair, UncoupledMisalignedSpurFollowsWinkler)
 {
   auto &b = built();
