@@ -211,149 +211,145 @@ namespace gearfem::helical
       s.at[std::size_t(i)] = s.index(sub[std::size_t(s.sub[std::size_t(i)])].slice, s.pair[std::size_t(i)]);
   }
 
-  HelicalResult SlicedPair::solve(double phi1, double torque) const
+  long SlicedPair::pair_key(int t1, int t2, long wrap) const
   {
-    require_greater("Solve/Torques", torque, 0.0, "N m");
-    (void)cycle_.at(0, torque); // SolverError naming the cycle's torque range outside it
-    const auto t0  = Clock::now();
-    const int N    = o_.slices;
-    const double b = o_.helix.face_width;
-    const auto zc  = slice_centres(b, N);
-    const auto where = [&](const std::string &what) {
-      return "helical position phi1 = " + to_string_g(phi1 / units::deg) + " deg, torque " + to_string_g(torque) +
-             " N m: " + what;
-    };
-    const auto clamp_load = [&](double T) { return std::clamp(T, cycle_.torque_lo, cycle_.torque_hi); };
-    const auto pair_key = [&](int t1, int t2, long wrap) {
-      return long(mod(t1 - wrap, z_[0])) * z_[1] + mod(t2 + wrap, z_[1]);
-    };
-    std::vector<Sub> sub = subs(phi1);
-    const auto prepare = [&](Sub &u, double load) {
-      u.p = &cycle_.at(u.g, clamp_load(load));
-      u.offset = resolver_.offsets(*u.p).array() + lead_gap(o_.lead, zc[std::size_t(u.slice)], b, o_.alpha_wt);
-      u.keep.clear();
-      for (std::size_t c = 0; c < u.p->size(); ++c)
-        if (u.p->cand[c].point.force > 0 || u.p->cand[c].point.gap < initial_gap)
-          u.keep.push_back(int(c));
-    };
-    for (auto &u : sub)
-      prepare(u, torque);
+    return long(mod(t1 - wrap, z_[0])) * z_[1] + mod(t2 + wrap, z_[1]);
+  }
 
-    System s;
-    int iterations = 0;
-    for (int pass = 0;; ++pass)
+  void SlicedPair::prepare(Sub &u, double load) const
+  {
+    const double b = o_.helix.face_width;
+    u.p = &cycle_.at(u.g, std::clamp(load, cycle_.torque_lo, cycle_.torque_hi));
+    u.offset =
+      resolver_.offsets(*u.p).array() + lead_gap(o_.lead, slice_centres(b, o_.slices)[std::size_t(u.slice)], b, o_.alpha_wt);
+    u.keep.clear();
+    for (std::size_t c = 0; c < u.p->size(); ++c)
+      if (u.p->cand[c].point.force > 0 || u.p->cand[c].point.gap < initial_gap)
+        u.keep.push_back(int(c));
+  }
+
+  double SlicedPair::assemble(System &s, std::vector<Sub> &sub, double torque) const
+  {
+    s   = System();
+    s.m = 0;
+    for (auto &u : sub)
+      u.first = s.m, s.m += int(u.keep.size());
+    const int m = s.m;
+    s.a.resize(m), s.curvature.resize(m), s.q_build.resize(m), s.ghat.resize(m), s.D.resize(m), s.lambda0.resize(m);
+    double q = 0; // start: each sub-slice's build rotation scaled to the torque, weighted
+    for (std::size_t j = 0; j < sub.size(); ++j)
       {
-        if (pass == 12)
-          throw SolverError(where("the scenes and candidate sets of the slices did not settle in 12 passes"));
-        // Assemble the coupled problem.
-        s   = System();
-        s.m = 0;
-        for (auto &u : sub)
-          u.first = s.m, s.m += int(u.keep.size());
-        const int m = s.m;
-        s.a.resize(m), s.curvature.resize(m), s.q_build.resize(m), s.ghat.resize(m), s.D.resize(m), s.lambda0.resize(m);
-        double q = 0;
-        for (std::size_t j = 0; j < sub.size(); ++j)
+        const Sub &u  = sub[j];
+        const auto &p = *u.p;
+        const int n   = int(u.keep.size());
+        Eigen::MatrixXd &B = s.block.emplace_back(n, n);
+        for (int r = 0; r < n; ++r)
           {
-            const Sub &u = sub[j];
-            const auto &p = *u.p;
-            const int n   = int(u.keep.size());
-            Eigen::MatrixXd &B = s.block.emplace_back(n, n);
-            for (int r = 0; r < n; ++r)
-              {
-                const int c = u.keep[std::size_t(r)], i = u.first + r;
-                for (int t = 0; t < n; ++t)
-                  B(r, t) = p.W(c, u.keep[std::size_t(t)]) / u.weight;
-                s.a[i]         = p.a[c];
-                s.curvature[i] = p.curvature[c];
-                s.q_build[i]   = p.q_build;
-                s.ghat[i]      = p.ghat[c] + u.offset[c];
-                s.D[i]         = p.D.size() ? p.D[c] / u.weight : 0.0;
-                s.lambda0[i]   = p.load_build > 0 ? std::max(0.0, p.cand[std::size_t(c)].point.force) * u.weight *
-                                                      torque / p.load_build :
-                                                    0.0;
-                s.sub.push_back(int(j));
-                s.pair.push_back(pair_key(p.cand[std::size_t(c)].point.tooth(1), p.cand[std::size_t(c)].point.tooth(2),
-                                          u.wrap));
-              }
-            q += u.weight * (p.load_build > 0 ? p.q_build * torque / p.load_build : p.q_build);
+            const int c = u.keep[std::size_t(r)], i = u.first + r;
+            const auto &pt = p.cand[std::size_t(c)].point;
+            for (int t = 0; t < n; ++t)
+              B(r, t) = p.W(c, u.keep[std::size_t(t)]) / u.weight;
+            s.a[i]         = p.a[c];
+            s.curvature[i] = p.curvature[c];
+            s.q_build[i]   = p.q_build;
+            s.ghat[i]      = p.ghat[c] + u.offset[c];
+            s.D[i]         = p.D.size() ? p.D[c] / u.weight : 0.0;
+            s.lambda0[i]   = p.load_build > 0 ? std::max(0.0, pt.force) * u.weight * torque / p.load_build : 0.0;
+            s.sub.push_back(int(j));
+            s.pair.push_back(pair_key(pt.tooth(1), pt.tooth(2), u.wrap));
           }
-        couple(s, sub);
-        SlicedOperator op(s, sub);
-        // Newton on the curvature of the rigid gaps, the complementarity problem at each step.
-        std::vector<char> prev;
-        bool settled = false;
-        Eigen::VectorXd lambda0 = s.lambda0;
-        for (int it = 0; it < 30 && !settled; ++it)
-          {
-            const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q) - s.q_build;
-            s.arm = s.a + s.curvature.cwiseProduct(dq);
-            const Eigen::VectorXd gl =
-              s.ghat + s.a * q + 0.5 * s.curvature.cwiseProduct(dq.cwiseProduct(dq)) - s.arm * q;
-            s.solution = contact::solve_ncp_spd(op, s.arm, gl, torque, lambda0, 400);
-            iterations += s.solution.iterations;
-            if (!s.solution.ok)
-              throw SolverError(where(s.solution.why));
-            constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
-            settled = it > 0 && s.solution.active == prev &&
-                      std::abs(s.solution.q - q) <= 1e-10 * std::abs(s.solution.q) + q_floor;
-            prev    = s.solution.active;
-            lambda0 = s.solution.lambda;
-            q       = s.solution.q;
-          }
-        if (!settled)
-          throw SolverError(where("the rotation did not settle in 30 curvature updates"));
-        s.q          = q;
-        s.iterations = iterations;
-        const Eigen::VectorXd &lambda = s.solution.lambda;
-        bool changed = false;
-        // The scene of each sub-slice at its own load per unit width (as the 2-D section's).
-        if (pass < 6)
-          for (auto &u : sub)
-            {
-              double T = 0;
-              for (int r = 0; r < int(u.keep.size()); ++r)
-                T -= s.arm[u.first + r] * lambda[u.first + r];
-              const auto *p = &cycle_.at(u.g, clamp_load(T / u.weight));
-              if (T > 0 && p != u.p)
-                prepare(u, T / u.weight), changed = true;
-            }
-        if (changed)
-          continue;
-        // Candidates left out that would penetrate join the problem.
-        const Eigen::VectorXd shift = s.coupled() ? Eigen::VectorXd(s.dC * s.pair_torques(sub, lambda)) : Eigen::VectorXd();
-        for (auto &u : sub)
-          {
-            const auto &p = *u.p;
-            std::vector<char> in(p.size(), 0);
-            for (const int c : u.keep)
-              in[std::size_t(c)] = 1;
-            std::vector<int> add;
-            for (std::size_t c = 0; c < p.size(); ++c)
-              {
-                if (in[c])
-                  continue;
-                const double dq = q - p.q_build;
-                double g = p.ghat[Eigen::Index(c)] + u.offset[Eigen::Index(c)] + p.a[Eigen::Index(c)] * q +
-                           0.5 * p.curvature[Eigen::Index(c)] * dq * dq;
-                for (int r = 0; r < int(u.keep.size()); ++r)
-                  g += p.W(Eigen::Index(c), u.keep[std::size_t(r)]) * lambda[u.first + r] / u.weight;
-                const long key = pair_key(p.cand[c].point.tooth(1), p.cand[c].point.tooth(2), u.wrap);
-                if (s.coupled() && s.pair_index.count(key))
-                  g -= p.a[Eigen::Index(c)] * shift[s.index(u.slice, key)];
-                if (g < 0)
-                  add.push_back(int(c));
-              }
-            if (!add.empty())
-              {
-                u.keep.insert(u.keep.end(), add.begin(), add.end());
-                std::sort(u.keep.begin(), u.keep.end());
-                changed = true;
-              }
-          }
-        if (!changed)
-          break;
+        q += u.weight * (p.load_build > 0 ? p.q_build * torque / p.load_build : p.q_build);
       }
+    couple(s, sub);
+    return q;
+  }
+
+  int SlicedPair::rotate(System &s, const std::vector<Sub> &sub, double torque, double q) const
+  {
+    // Newton on the curvature of the rigid gaps, the complementarity problem at each step.
+    SlicedOperator op(s, sub);
+    std::vector<char> prev;
+    bool settled    = false;
+    int iterations  = 0;
+    Eigen::VectorXd lambda0 = s.lambda0;
+    for (int it = 0; it < 30 && !settled; ++it)
+      {
+        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(s.m, q) - s.q_build;
+        s.arm = s.a + s.curvature.cwiseProduct(dq);
+        const Eigen::VectorXd gl = s.ghat + s.a * q + 0.5 * s.curvature.cwiseProduct(dq.cwiseProduct(dq)) - s.arm * q;
+        s.solution = contact::solve_ncp_spd(op, s.arm, gl, torque, lambda0, 400);
+        iterations += s.solution.iterations;
+        if (!s.solution.ok)
+          throw SolverError(s.solution.why);
+        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
+        settled = it > 0 && s.solution.active == prev &&
+                  std::abs(s.solution.q - q) <= 1e-10 * std::abs(s.solution.q) + q_floor;
+        prev    = s.solution.active;
+        lambda0 = s.solution.lambda;
+        q       = s.solution.q;
+      }
+    if (!settled)
+      throw SolverError("the rotation did not settle in 30 curvature updates");
+    s.q = q;
+    return iterations;
+  }
+
+  bool SlicedPair::rescene(std::vector<Sub> &sub, const System &s) const
+  {
+    // The scene of each sub-slice at its own load per unit width (as the 2-D section's).
+    bool changed = false;
+    for (auto &u : sub)
+      {
+        double T = 0;
+        for (int r = 0; r < int(u.keep.size()); ++r)
+          T -= s.arm[u.first + r] * s.solution.lambda[u.first + r];
+        const auto *p = &cycle_.at(u.g, std::clamp(T / u.weight, cycle_.torque_lo, cycle_.torque_hi));
+        if (T > 0 && p != u.p)
+          prepare(u, T / u.weight), changed = true;
+      }
+    return changed;
+  }
+
+  bool SlicedPair::grow(std::vector<Sub> &sub, const System &s) const
+  {
+    // Candidates left out that would penetrate join the problem.
+    const Eigen::VectorXd &lambda = s.solution.lambda;
+    const Eigen::VectorXd shift = s.coupled() ? Eigen::VectorXd(s.dC * s.pair_torques(sub, lambda)) : Eigen::VectorXd();
+    bool changed = false;
+    for (auto &u : sub)
+      {
+        const auto &p = *u.p;
+        std::vector<char> in(p.size(), 0);
+        for (const int c : u.keep)
+          in[std::size_t(c)] = 1;
+        std::vector<int> add;
+        const double dq = s.q - p.q_build;
+        for (std::size_t c = 0; c < p.size(); ++c)
+          {
+            if (in[c])
+              continue;
+            const auto k = Eigen::Index(c);
+            double g     = p.ghat[k] + u.offset[k] + p.a[k] * s.q + 0.5 * p.curvature[k] * dq * dq;
+            for (int r = 0; r < int(u.keep.size()); ++r)
+              g += p.W(k, u.keep[std::size_t(r)]) * lambda[u.first + r] / u.weight;
+            const long key = pair_key(p.cand[c].point.tooth(1), p.cand[c].point.tooth(2), u.wrap);
+            if (s.coupled() && s.pair_index.count(key))
+              g -= p.a[k] * shift[s.index(u.slice, key)];
+            if (g < 0)
+              add.push_back(int(c));
+          }
+        if (!add.empty())
+          {
+            u.keep.insert(u.keep.end(), add.begin(), add.end());
+            std::sort(u.keep.begin(), u.keep.end());
+            changed = true;
+          }
+      }
+    return changed;
+  }
+
+  void SlicedPair::check_coverage(const std::vector<Sub> &sub, const System &s) const
+  {
     // The stored candidates must cover the contact (as contact::solve_condensed checks).
     for (const auto &u : sub)
       {
@@ -365,10 +361,10 @@ namespace gearfem::helical
             const auto &cnd = p.cand[std::size_t(c)];
             const double l  = s.solution.lambda[u.first + r];
             if (!cnd.smooth && l > 0 && std::abs(dq) > 1e-3 * std::abs(p.q_build))
-              throw SolverError(where("stored candidate slave node " + std::to_string(cnd.point.node) + " of body " +
-                                      std::to_string(cnd.point.slave_body) +
-                                      ", whose gap is not smooth in the rotation, carries load away from the build "
-                                      "torque: build the condensed cycle nearer this load"));
+              throw SolverError("stored candidate slave node " + std::to_string(cnd.point.node) + " of body " +
+                                std::to_string(cnd.point.slave_body) +
+                                ", whose gap is not smooth in the rotation, carries load away from the build "
+                                "torque: build the condensed cycle nearer this load");
             if (!cnd.edge)
               continue;
             double dW = 0;
@@ -377,10 +373,42 @@ namespace gearfem::helical
                     (s.solution.lambda[u.first + t] / u.weight - p.cand[std::size_t(u.keep[std::size_t(t)])].point.force);
             const double approach = -(p.a[c] * dq + 0.5 * p.curvature[c] * dq * dq + dW);
             if (approach > 0.5 * p.search_distance)
-              throw SolverError(where("the contact of slice " + std::to_string(u.slice + 1) +
-                                      " reaches the edge of the stored candidates: build the condensed cycle at a "
-                                      "higher torque or with a larger Contact/Search distance"));
+              throw SolverError("the contact of slice " + std::to_string(u.slice + 1) +
+                                " reaches the edge of the stored candidates: build the condensed cycle at a "
+                                "higher torque or with a larger Contact/Search distance");
           }
+      }
+  }
+
+  HelicalResult SlicedPair::solve(double phi1, double torque) const
+  {
+    require_greater("Solve/Torques", torque, 0.0, "N m");
+    (void)cycle_.at(0, torque); // SolverError naming the cycle's torque range outside it
+    const auto t0 = Clock::now();
+    std::vector<Sub> sub = subs(phi1);
+    for (auto &u : sub)
+      prepare(u, torque);
+    System s;
+    int iterations = 0;
+    try
+      {
+        for (int pass = 0;; ++pass)
+          {
+            if (pass == 12)
+              throw SolverError("the scenes and candidate sets of the slices did not settle in 12 passes");
+            const double q = assemble(s, sub, torque);
+            iterations += rotate(s, sub, torque, q);
+            s.iterations = iterations;
+            if ((pass < 6 && rescene(sub, s)) || grow(sub, s))
+              continue;
+            break;
+          }
+        check_coverage(sub, s);
+      }
+    catch (const SolverError &e)
+      {
+        throw SolverError("helical position phi1 = " + to_string_g(phi1 / units::deg) + " deg, torque " +
+                          to_string_g(torque) + " N m: " + e.what());
       }
     HelicalResult h = evaluate(phi1, torque, sub, s);
     h.iterations    = iterations;

@@ -129,7 +129,24 @@ namespace gearfem::helical
     Eigen::MatrixXd section_stiffness(const contact::CondensedPosition &p,
                                       const std::vector<std::pair<int, int>> &pairs) const;
     void couple(System &s, const std::vector<Sub> &sub) const;
+    // The phases of solve(): the absolute tooth-pair key; a sub-slice's stored configuration,
+    // offsets and initial candidates at a load; the coupled problem (returns the start
+    // rotation); the Newton loop on the rotation (returns active-set iterations); a new scene
+    // per sub-slice at its own load, and candidates that would penetrate (each true when the
+    // problem changed); the coverage of the contact by the stored candidates.
+    long pair_key(int t1, int t2, long wrap) const;
+    void prepare(Sub &u, double load) const;
+    double assemble(System &s, std::vector<Sub> &sub, double torque) const;
+    int rotate(System &s, const std::vector<Sub> &sub, double torque, double q) const;
+    bool rescene(std::vector<Sub> &sub, const System &s) const;
+    bool grow(std::vector<Sub> &sub, const System &s) const;
+    void check_coverage(const std::vector<Sub> &sub, const System &s) const;
     HelicalResult evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const;
+    /// The root stress of each slice from its section load (helical/slicing_post.cc): `tau`
+    /// the contact torque and `sig` the fillet stresses (pinion, gear) per tooth pair and slice.
+    void root_stresses(HelicalResult &h, const std::map<long, Eigen::VectorXd> &tau,
+                       const std::map<long, Eigen::VectorXd> sig[2], const std::vector<Sub> &sub,
+                       const System &s) const;
     const condensed::CondensedCycle &cycle_;
     const solve::GearContactInput &in_;
     SlicingOptions o_;

@@ -16,6 +16,56 @@ namespace gearfem::helical
     int mod(long a, long n) { return int(((a % n) + n) % n); }
   } // namespace
 
+  void SlicedPair::root_stresses(HelicalResult &h, const std::map<long, Eigen::VectorXd> &tau,
+                                 const std::map<long, Eigen::VectorXd> sig[2], const std::vector<Sub> &sub,
+                                 const System &s) const
+  {
+    const int N = o_.slices;
+    // The fillet of a section bends under the load its section carries: the contact load plus
+    // what the coupling brings from its neighbours, F = tau + K (dC tau) (tau uncoupled), at the
+    // stress per unit load of the section's own contact (or of the nearest slice where the pair
+    // carries a tenth of its largest load or more: a lightly loaded section's fillet stress comes
+    // mostly from the neighbouring tooth's load).
+    Eigen::VectorXd tq, Fq;
+    if (s.coupled())
+      {
+        tq = s.pair_torques(sub, s.solution.lambda);
+        const Eigen::VectorXd shift = s.dC * tq;
+        Fq = tq;
+        const int P = s.n_pairs;
+        for (int k = 0; k < N; ++k)
+          Fq.segment(k * P, P) += s.K[std::size_t(k)] * shift.segment(k * P, P);
+      }
+    for (const auto &[key, t] : tau)
+      {
+        Eigen::VectorXd F = t;
+        if (s.coupled())
+          for (int k = 0; k < N; ++k)
+            F[k] = Fq[s.index(k, key)];
+        for (int g = 0; g < 2; ++g)
+          {
+            const auto it = sig[g].find(key);
+            if (it == sig[g].end())
+              continue;
+            const Eigen::VectorXd &sg = it->second;
+            const double floor = 0.1 * t.maxCoeff();
+            for (int k = 0; k < N; ++k)
+              {
+                int near = -1;
+                for (int d = 0; d < N && near < 0; ++d)
+                  for (const int kk : {k - d, k + d})
+                    if (near < 0 && kk >= 0 && kk < N && t[kk] >= floor && t[kk] > 0 && sg[kk] > 0)
+                      near = kk;
+                if (near < 0)
+                  continue;
+                const double stress = sg[near] / t[near] * std::max(0.0, F[k]);
+                double &out = g == 0 ? h.slices[std::size_t(k)].root_stress_pinion : h.slices[std::size_t(k)].root_stress_gear;
+                out = std::max(out, stress);
+              }
+          }
+      }
+  }
+
   HelicalResult SlicedPair::evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const
   {
     const int N     = o_.slices;
@@ -106,49 +156,7 @@ namespace gearfem::helical
             line[std::size_t(u.slice)] += tp.force * u.weight / dz;
           }
       }
-    // The fillet of a section bends under the load its section carries: the contact load plus
-    // what the coupling brings from its neighbours, F = tau + K (dC tau) (tau uncoupled), at the
-    // stress per unit load of the section's own contact (or of the nearest slice where the pair
-    // carries a tenth of its largest load or more: a lightly loaded section's fillet stress comes
-    // mostly from the neighbouring tooth's load).
-    Eigen::VectorXd tq, Fq;
-    if (s.coupled())
-      {
-        tq = s.pair_torques(sub, lam);
-        const Eigen::VectorXd shift = s.dC * tq;
-        Fq = tq;
-        const int P = s.n_pairs;
-        for (int k = 0; k < N; ++k)
-          Fq.segment(k * P, P) += s.K[std::size_t(k)] * shift.segment(k * P, P);
-      }
-    for (const auto &[key, t] : tau)
-      {
-        Eigen::VectorXd F = t;
-        if (s.coupled())
-          for (int k = 0; k < N; ++k)
-            F[k] = Fq[s.index(k, key)];
-        for (int g = 0; g < 2; ++g)
-          {
-            const auto it = sig[g].find(key);
-            if (it == sig[g].end())
-              continue;
-            const Eigen::VectorXd &sg = it->second;
-            const double floor = 0.1 * t.maxCoeff();
-            for (int k = 0; k < N; ++k)
-              {
-                int near = -1;
-                for (int d = 0; d < N && near < 0; ++d)
-                  for (const int kk : {k - d, k + d})
-                    if (near < 0 && kk >= 0 && kk < N && t[kk] >= floor && t[kk] > 0 && sg[kk] > 0)
-                      near = kk;
-                if (near < 0)
-                  continue;
-                const double stress = sg[near] / t[near] * std::max(0.0, F[k]);
-                double &out = g == 0 ? h.slices[std::size_t(k)].root_stress_pinion : h.slices[std::size_t(k)].root_stress_gear;
-                out = std::max(out, stress);
-              }
-          }
-      }
+    root_stresses(h, tau, sig, sub, s);
     const double mean = h.normal_force / b;
     for (auto &sr : h.slices)
       {
