@@ -15,6 +15,8 @@
 #include "condensed/resolve.h"
 #include "commands/solve_hunting.h"
 #include "tolerance/parameters.h"
+#include "choice/parameters.h"
+#include "choice/to_target.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -127,10 +129,53 @@ namespace gearfem::commands
         }
     }
 
+    /// `Solve/Target`: choose the model, prove it at sample positions, refine, then sweep the
+    /// accepted level (choice/to_target.h).
+    void run_to_target(solve::GearContactInput &in, const choice::AccuracyTarget &target,
+                       const dealii::ParameterHandler &prm, const post::PostOptions &post_options,
+                       const RunContext &ctx)
+    {
+      std::ostream &out = *ctx.out;
+      choice::TargetOptions options;
+      options.cost_cap = in.solve.cost_cap;
+      options.post     = post_options;
+      options.out      = &out;
+      out << "model choice: target " << choice::to_string(target) << ", cost cap " << in.solve.cost_cap << " s"
+          << std::endl;
+      choice::TargetOutcome o = choice::run_to_target(in, target, choice::fixed_settings(prm), options);
+      const double cpu_setup  = process_cpu_seconds();
+      const solve::SolveRunResult r = run_full_fe(*o.model, in, post_options, ctx, o.model->setup_seconds(), cpu_setup,
+                                                  o.model->mesh_seconds(), "");
+      // The p-p estimate relative to the swept p-p of each torque.
+      const auto &sw = r.results.sweep;
+      const auto T_col = sw.column("torque"), ste = sw.column("STE");
+      std::vector<double> pp;
+      for (const double T : in.solve.torques)
+        {
+          double lo = 0, hi = 0;
+          bool first = true;
+          for (std::size_t i = 0; i < T_col.size(); ++i)
+            if (T_col[i] == T)
+              {
+                lo = first ? ste[i] : std::min(lo, ste[i]), hi = first ? ste[i] : std::max(hi, ste[i]);
+                first = false;
+              }
+          pp.push_back((hi - lo) * 1e-6); // sweep.csv STE in um
+        }
+      choice::rescale_pp(o, pp);
+      out << "\n" << choice::model_choice_summary(o);
+      if (ctx.outcome)
+        ctx.outcome->record_members.emplace_back("model_choice", choice::model_choice_json(o));
+      if (!o.met)
+        out << "warning: Solve/Target not met (" << o.stop_reason
+            << "); the results are those of the finest level, with the estimates above\n";
+    }
+
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
       std::ostream &out = *ctx.out;
-      const solve::GearContactInput in = solve::parse_gear_contact_input(prm);
+      solve::GearContactInput in = solve::parse_gear_contact_input(prm);
+      const choice::AccuracyTarget target = choice::parse_target(in.solve.target);
       const post::PostOptions post_options = post::parse_post_parameters(prm);
       const auto &pair = in.meshing();
       out << "solve: z " << pair.teeth(1) << "/" << pair.teeth(2) << (pair.is_internal() ? " (internal)" : "") << ", a "
@@ -144,8 +189,20 @@ namespace gearfem::commands
       const tolerance::DeviationParameters deviations = tolerance::parse_deviation_parameters(prm);
       if (deviations.active())
         {
+          if (target.active())
+            throw InputError("Solve/Target", in.solve.target, "none with a Deviations section (its cycle has its own mesh)");
           in.require_external("Deviations");
           run_hunting_cycle(in, post_options, deviations, ctx);
+          return;
+        }
+      if (target.active())
+        {
+          in.require_external("Solve/Target");
+          if (!ctx.condensed.empty())
+            throw InputError("Solve/Target", in.solve.target, "none with --condensed (a stored cycle has its own mesh)");
+          if (ctx.validate_only)
+            return;
+          run_to_target(in, target, prm, post_options, ctx);
           return;
         }
       if (!ctx.condensed.empty())

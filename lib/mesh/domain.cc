@@ -364,6 +364,10 @@ namespace gearfem::mesh
             n += et[k].size();
         return n;
       };
+      if (!options.fallbacks && n_non_quads() > 0)
+        throw RecombinationFailed("Mesh", "gmsh Blossom recombination left " + std::to_string(n_non_quads()) +
+                                            " non-quadrilateral elements",
+                                  "an all-quad mesh at the first attempt", "fallbacks off: try other sizes");
       // Blossom occasionally fails on a valid triangulation: retry Frontal-Delaunay with a
       // perturbed triangulation (random factor), then MeshAdapt, before subdividing.
       for (int attempt = 1; attempt <= 3 && n_non_quads() > 0; ++attempt)

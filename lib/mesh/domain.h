@@ -4,6 +4,7 @@
 // curve pieces (first loop outer, counter-clockwise; further loops are holes), and MeshData
 // is the gmsh result (vertices, quads, boundary edges with ids) ready for deal.II import
 // (mesh/triangulation.h). SI units (m).
+#include "base/errors.h"
 #include "geometry/curve.h"
 
 #include <array>
@@ -111,6 +112,16 @@ namespace gearfem::mesh
     int smoothing_steps   = 5;      ///< gmsh Mesh.Smoothing (Laplacian smoothing passes)
     std::filesystem::path msh_file; ///< if not empty, write the mesh here (MSH 4.1, atomic)
     std::string model_name = "gearfem";
+    /// When Blossom recombination leaves triangles: retry, then subdivide (true), or throw
+    /// RecombinationFailed at once (false: a caller that can try other sizes, choice/).
+    bool fallbacks = true;
+  };
+
+  /// The first all-quad recombination failed and MeshingOptions::fallbacks was off.
+  class RecombinationFailed : public InputError
+  {
+  public:
+    using InputError::InputError;
   };
 
   /// Result of meshing: an all-quad mesh with boundary edges tagged by piece.

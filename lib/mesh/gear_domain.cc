@@ -496,6 +496,7 @@ namespace gearfem::mesh
     o.msh_file          = msh_file;
     o.samples_per_piece = p.spline_samples;
     o.model_name        = "gear_z" + std::to_string(tooth.teeth());
+    o.fallbacks         = p.quad_fallbacks;
     return mesh_domain(gear_domain(tooth, p), o);
   }
 } // namespace gearfem::mesh

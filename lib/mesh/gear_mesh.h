@@ -42,6 +42,10 @@ namespace gearfem::mesh
     std::vector<double> flank_split_radii;
     unsigned int refinements = 0; ///< global refinements after import
     int spline_samples       = 24; ///< gmsh spline points per outline segment
+    /// Not a `Mesh` entry: false makes a failed first quad recombination throw
+    /// RecombinationFailed instead of the slow retries and the subdivision fallback
+    /// (MeshingOptions::fallbacks), so that the model choice tries other sizes (choice/).
+    bool quad_fallbacks = true;
     /// Extra placement angles delta_k [rad] of the teeth, counter-clockwise: tooth k (0 <= k < z)
     /// stands at 2 pi k / z + delta_k (a pitch deviation built into the geometry). Empty: every
     /// tooth at its nominal pitch; else z values. Consecutive teeth meet on their root lands at

@@ -139,6 +139,30 @@ namespace gearfem::solve
     return f;
   }
 
+  std::vector<EstimatedQuantities> solve_samples(contact::GearContactModel &model, const std::vector<double> &positions,
+                                                 const std::vector<double> &torques, const post::PostOptions &post,
+                                                 Progress *progress, std::size_t step, const std::string &label)
+  {
+    std::vector<EstimatedQuantities> q;
+    std::vector<contact::ContactSolution> warm(positions.size());
+    std::vector<char> have(positions.size(), 0);
+    for (const double T : torques)
+      for (std::size_t i = 0; i < positions.size(); ++i)
+        {
+          bool h = have[i];
+          q.push_back(solve_one(model, positions[i], T, warm[i], h, post));
+          have[i] = h;
+          if (progress)
+            {
+              std::ostringstream d;
+              d << "T " << T << " N m, roll " << std::fixed << std::setprecision(3) << positions[i] / units::deg
+                << " deg" << (label.empty() ? "" : ", " + label) << ", STE " << q.back().ste * 1e6 << " um";
+              progress->step(++step, d.str());
+            }
+        }
+    return q;
+  }
+
   ErrorEstimate estimate_error(contact::GearContactModel &coarse, contact::GearContactModel &fine,
                                const std::vector<double> &positions, const std::vector<double> &torques,
                                const ErrorEstimateOptions &options)
@@ -153,27 +177,17 @@ namespace gearfem::solve
     e.fine_dofs  = fine.n_dofs();
     const auto t0 = Clock::now();
     Progress progress(options.out, 2 * positions.size() * torques.size(), "error-estimate solve");
-    std::size_t step = 0;
-    // Warm starts: each level and position from the same position at the previous torque.
-    std::vector<contact::ContactSolution> warm(2 * positions.size());
-    std::vector<char> have(2 * positions.size(), 0);
-    for (const double T : torques)
+    const std::size_t n = positions.size() * torques.size();
+    const auto coarse_q = solve_samples(coarse, positions, torques, options.post, &progress, 0, "level h");
+    const auto fine_q   = solve_samples(fine, positions, torques, options.post, &progress, n, "level h/r");
+    for (std::size_t t = 0; t < torques.size(); ++t)
       for (std::size_t i = 0; i < positions.size(); ++i)
         {
           ErrorSample s;
           s.phi1   = positions[i];
-          s.torque = T;
-          for (int level = 0; level < 2; ++level)
-            {
-              bool h = have[2 * i + level];
-              auto &q = level == 0 ? s.coarse : s.fine;
-              q       = solve_one(level == 0 ? coarse : fine, s.phi1, T, warm[2 * i + level], h, options.post);
-              have[2 * i + level] = h;
-              std::ostringstream d;
-              d << "T " << T << " N m, roll " << std::fixed << std::setprecision(3) << s.phi1 / units::deg
-                << " deg, level " << (level == 0 ? "h" : "h/r") << ", STE " << q.ste * 1e6 << " um";
-              progress.step(++step, d.str());
-            }
+          s.torque = torques[t];
+          s.coarse = coarse_q[t * positions.size() + i];
+          s.fine   = fine_q[t * positions.size() + i];
           richardson(s, e.refinement, e.order);
           e.samples.push_back(s);
         }

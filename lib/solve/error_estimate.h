@@ -11,6 +11,7 @@
 // summary and in run.json.
 #include "solve/input.h"
 #include "post/position.h"
+#include "base/progress.h"
 
 #include <array>
 #include <ostream>
@@ -82,6 +83,15 @@ namespace gearfem::solve
   /// h_fillet and h_contact) divided by r; the body sizes (h_body, h_tooth, growth, bore,
   /// rim) and the fine teeth unchanged.
   mesh::GearMeshParameters refined_mesh(const mesh::GearMeshParameters &p, double module, double refinement);
+
+  /// STE, root stresses and p_max of `model` at `positions` [rad] x `torques` [N m], torque-major
+  /// (index t * positions.size() + i); each position warm-started from the same position at the
+  /// previous torque. `progress` (may be null) steps from `step` + 1 on. Throws SolverError
+  /// when a solve does not converge or a value is not finite.
+  std::vector<EstimatedQuantities> solve_samples(contact::GearContactModel &model, const std::vector<double> &positions,
+                                                 const std::vector<double> &torques, const post::PostOptions &post,
+                                                 Progress *progress = nullptr, std::size_t step = 0,
+                                                 const std::string &label = "");
 
   /// The estimate on a given pair of models (level h = `coarse`, level h/r = `fine`) at
   /// `positions` [rad] x `torques` [N m]. Throws SolverError when a solve does not converge.

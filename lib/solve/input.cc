@@ -64,6 +64,17 @@ namespace gearfem::solve
                       "discretisation error of STE, root stress and p_max (Richardson, order 2) in the "
                       "summary and run.json (docs/output-format.md). Costs one more set-up on the finer "
                       "mesh and 6 solves per torque. Units: none.");
+    prm.declare_entry("Target", "none", Anything(),
+                      "The accuracy the run asks for; gearfem then chooses the mesh (h_contact, h_fillet) "
+                      "and the degree, estimates the error of the choice on the run, refines where needed "
+                      "and reports the achieved estimate (docs/model-choice.md). none (the mesh as given), a "
+                      "preset (dynamics tables: mean STE 1 %, p-p STE 2 %; rating check: root stress 3 %, "
+                      "p_max 5 %; micro-geometry design: mean STE 2 %, p-p STE 1 %, p_max 10 %), or a list "
+                      "such as 'mean STE 1, p-p STE 1, root stress 3' (percent). Mesh and Finite elements "
+                      "entries set in the input are kept. Units: %. Allowed: 0.01 to 50 each.");
+    prm.declare_entry("Cost cap", "1800", Double(),
+                      "With a Target: the wall time the choice may spend (levels, samples and the "
+                      "predicted sweep); 0: none. Units: s. Allowed: >= 0.");
     prm.leave_subsection();
   }
 
@@ -97,7 +108,10 @@ namespace gearfem::solve
     p.vtu_scale = params::get_double(prm, "VTU displacement scale");
     p.plots     = params::get_bool(prm, "Plots");
     p.error_estimate = params::get_bool(prm, "Error estimate");
+    p.target         = prm.get("Target");
+    p.cost_cap       = params::get_double(prm, "Cost cap");
     prm.leave_subsection();
+    require_range("Solve/Cost cap", p.cost_cap, 0.0, 1e7, "s");
 
     // Roll angles beyond a revolution are not a position of the pair but a typing error (and
     // 1e308 deg would reach the solver as an infinite rotation): refused here, before meshing.

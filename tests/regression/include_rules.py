@@ -30,6 +30,7 @@ ALLOWED = {
     'loading': {'base', 'params', 'geometry', 'mesh', 'fem', 'contact'},
     'post': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading'},
     'solve': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post'},
+    'choice': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve'},
     'condensed': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'mesh', 'fem', 'contact',
                   'loading', 'post', 'solve'},
     'optimise': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post',

@@ -1,0 +1,57 @@
+#pragma once
+// The cheapest FE model expected to meet an accuracy target, read off the measured model
+// ladder (validation/speed_vs_error, docs/model-choice.md) and the pair's own size. The
+// choice is the first guess of choice/to_target.h, which then proves it on the run. No deal.II.
+#include "choice/target.h"
+#include "geometry/pair.h"
+#include "mesh/gear_mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace gearfem::choice
+{
+  /// The entries the user set in the input: they override the automatic choice.
+  struct FixedSettings
+  {
+    bool h_contact = false, h_fillet = false, h_corner = false, degree = false, model = false;
+  };
+
+  struct ModelChoice
+  {
+    mesh::GearMeshParameters mesh[2]; ///< sizes resolved to metres (h_contact never 0)
+    unsigned int degree = 2;
+    /// The largest h_contact that keeps the contact field of the tooth entering mesh out of
+    /// its fillet: the smaller flank height r_SAP - r_Ff of the two gears [m] (0: none).
+    double flank_height = 0;
+    std::vector<std::string> reasons; ///< why each setting, in words, with the measured figures
+  };
+
+  /// The ladder of contact sizes h_contact = m/n the choice moves on: n = 8, 10, 15, 20, 30,
+  /// 45, 60, 90 (m/10, m/15 and m/30 measured in validation/speed_vs_error).
+  const std::vector<int> &contact_rungs();
+  /// The error the measured ladder predicts at h_contact `h` [m] for module `m` [m] (relative;
+  /// order 2 from the worst measured case; p-p 1 (100 %) coarser than m/20; 0 for the root stress).
+  double predicted_error(Quantity q, double h, double m);
+  /// The coarsest rung at or below `h` (h itself below the finest rung).
+  double snap_finer(double h, double m);
+
+  /// The flank height bound of ModelChoice::flank_height.
+  double flank_height_bound(const geometry::GearPair &pair);
+
+  /// The first guess for `target`. `given`/`degree`: the parsed Mesh sections and FE degree,
+  /// whose entries named in `fixed` are kept. Rules (errors are the worst measured over three
+  /// pairs and three torques, validation/speed_vs_error):
+  ///  - h_contact: the coarsest rung (contact_rungs) whose predicted errors (predicted_error:
+  ///    mean STE 1.94 % at about m/10, p-p 1.1 % at m/30 and never coarser than m/20, where the
+  ///    tip-corner contact is unresolved (p-p 10.6 % at m/12 to m/18), p_max 8.8 % at m/30;
+  ///    all order 2) are within 1.1 times the tolerances;
+  ///  - from the root stress: h_fillet m/12 (0.62 %), h^2 below 0.62 %; and h_contact at most
+  ///    the flank height, which catches the Siasos 2010 23/69 pair (root stress 25-36 % off at
+  ///    h_contact 0.25-0.4 mm, above its 0.19 mm flank height);
+  ///  - Q1 only when neither the root stress nor p_max is asked and the STE tolerances are
+  ///    3 % or looser (Q1 at m/30: mean 2.0 %, p-p 1.5 %, root stress 2.9 %);
+  ///  - full gears: sectors are 20-36 % stiff on the mean STE and gain at most 20 % of cost.
+  ModelChoice choose_model(const geometry::GearPair &pair, const mesh::GearMeshParameters given[2],
+                           unsigned int degree, const AccuracyTarget &target, const FixedSettings &fixed);
+} // namespace gearfem::choice

@@ -1,0 +1,411 @@
+#include "choice/to_target.h"
+
+#include "base/errors.h"
+#include "base/progress.h"
+#include "base/units.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace gearfem::choice
+{
+  namespace
+  {
+    using Clock = std::chrono::steady_clock;
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    double since(Clock::time_point t0)
+    {
+      return std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+
+    /// The sizes of one level.
+    struct Sizes
+    {
+      mesh::GearMeshParameters mesh[2];
+      unsigned int degree = 2;
+    };
+
+    /// Scale the contact group (h_contact; h_corner follows it) and the fillet group
+    /// (h_fillet; h_coast follows it when 0) of both gears.
+    Sizes scaled(const Sizes &s, double contact, double fillet)
+    {
+      Sizes o = s;
+      for (auto &g : o.mesh)
+        {
+          g.h_contact *= contact;
+          if (g.h_corner > 0)
+            g.h_corner *= contact;
+          g.h_fillet = std::min(g.h_fillet * fillet, g.h_body);
+          g.h_contact = std::min(g.h_contact, g.h_body);
+        }
+      return o;
+    }
+
+    std::string mm(double v)
+    {
+      std::ostringstream o;
+      o << std::setprecision(3) << v * 1e3;
+      return o.str();
+    }
+
+    std::string pc(double v)
+    {
+      if (!std::isfinite(v))
+        return "-";
+      std::ostringstream o;
+      o << std::fixed << std::setprecision(v < 0.001 ? 3 : 2) << v * 100 << " %";
+      return o.str();
+    }
+
+    std::string json(double v)
+    {
+      if (!std::isfinite(v))
+        return "null";
+      std::ostringstream o;
+      o << std::setprecision(8) << v;
+      return o.str();
+    }
+
+    /// Build `sizes` on `in`'s pair and solve the samples: one Level.
+    /// Build `sizes` on `in`'s pair and solve the samples: one Level. Where gmsh's first quad
+    /// recombination fails, the fillet group is made 15 % finer and meshed again (at most 3
+    /// times, then the slow fallbacks are allowed): a slightly finer fillet keeps the
+    /// accuracy asked for and avoids the retries and the subdivision fallback (FZG type C: 18-33 s
+    /// of set-up instead of 3.5 s). `sizes` returns the sizes built.
+    Level solve_level(const solve::GearContactInput &in, Sizes &sizes, const std::string &role,
+                      const TargetOutcome &o, const TargetOptions &options,
+                      std::unique_ptr<contact::GearContactModel> &model)
+    {
+      Level l;
+      l.role      = role;
+      l.degree    = sizes.degree;
+      fem::FeOptions fe = in.fe;
+      fe.degree         = sizes.degree;
+      const auto t0     = Clock::now();
+      if (options.out)
+        *options.out << "model choice: " << role << " level " << o.levels.size() + 1 << ", h_contact "
+                     << mm(sizes.mesh[0].h_contact) << " mm, h_fillet " << mm(sizes.mesh[0].h_fillet) << " mm, Q"
+                     << l.degree << std::endl;
+      for (int attempt = 0;; ++attempt)
+        {
+          for (auto &g : sizes.mesh)
+            g.quad_fallbacks = attempt >= 3;
+          try
+            {
+              model = std::make_unique<contact::GearContactModel>(*in.pair, sizes.mesh, in.material, fe, in.contact,
+                                                                  in.unmodified_pair.get());
+              break;
+            }
+          catch (const mesh::RecombinationFailed &)
+            {
+              for (auto &g : sizes.mesh)
+                g.h_fillet *= 0.85;
+              ++l.remeshed;
+              if (options.out)
+                *options.out << "model choice: quad recombination failed; h_fillet " << mm(sizes.mesh[0].h_fillet)
+                             << " mm" << std::endl;
+            }
+        }
+      for (auto &g : sizes.mesh)
+        g.quad_fallbacks = true;
+      l.h_contact     = sizes.mesh[0].h_contact;
+      l.h_fillet      = sizes.mesh[0].h_fillet;
+      l.seconds_setup = since(t0);
+      l.dofs          = model->n_dofs();
+      l.subdivided    = model->body(1).mesh().subdivided || model->body(2).mesh().subdivided;
+      const auto t1   = Clock::now();
+      Progress progress(options.out, o.positions.size() * o.torques.size(), "model-choice sample");
+      l.samples         = solve::solve_samples(*model, o.positions, o.torques, options.post, &progress, 0, role);
+      l.seconds_samples = since(t1);
+      l.estimate.fill(nan);
+      return l;
+    }
+
+    /// The factor by which a group must shrink for its worst ratio estimate / tolerance
+    /// (order p, safety 1.2), within [1.5, 3].
+    double refinement(double worst, double p)
+    {
+      return std::clamp(1.2 * std::pow(worst, 1.0 / p), 1.5, 3.0);
+    }
+  } // namespace
+
+  std::vector<double> target_sample_positions(const geometry::GearPair &pair)
+  {
+    const double A = pair.point("A").roll_angle, B = pair.point("B").roll_angle, D = pair.point("D").roll_angle;
+    return {0.5 * (A + B), B, 0.5 * (B + D), D};
+  }
+
+  std::array<double, n_quantities> estimate_relative(const std::vector<solve::EstimatedQuantities> &a,
+                                                     const std::vector<solve::EstimatedQuantities> &b,
+                                                     std::size_t n_positions, double rho_contact,
+                                                     double rho_fillet, double p, const std::vector<double> *pp_sweep)
+  {
+    std::array<double, n_quantities> r{};
+    // A group whose size changed by less than 20 % gives no estimate: 1/(1 - rho^p) would
+    // amplify the noise of non-nested meshes (a 15 % nudge: factor 2.6).
+    const bool contact = std::abs(rho_contact - 1) > 0.2, fillet = std::abs(rho_fillet - 1) > 0.2;
+    const double fc = contact ? 1 / (1 - std::pow(rho_contact, p)) : 0;
+    const double ff = fillet ? 1 / (1 - std::pow(rho_fillet, p)) : 0;
+    const std::size_t n_t = n_positions ? a.size() / n_positions : 0;
+    for (std::size_t t = 0; t < n_t; ++t)
+      {
+        const std::size_t k0 = t * n_positions;
+        std::size_t hi = k0, lo = k0;
+        for (std::size_t k = k0; k < k0 + n_positions; ++k)
+          {
+            const double e = (b[k].ste - a[k].ste) * fc;
+            if (a[k].ste != 0)
+              r[0] = std::max(r[0], std::abs(e / a[k].ste));
+            if (a[k].p_max > 0)
+              r[3] = std::max(r[3], std::abs((b[k].p_max - a[k].p_max) * fc / a[k].p_max));
+            hi = a[k].ste > a[hi].ste ? k : hi;
+            lo = a[k].ste < a[lo].ste ? k : lo;
+          }
+        const double pp = pp_sweep && t < pp_sweep->size() ? (*pp_sweep)[t] : a[hi].ste - a[lo].ste;
+        if (pp > 0)
+          r[1] = std::max(r[1], std::abs(((b[hi].ste - a[hi].ste) - (b[lo].ste - a[lo].ste)) * fc / pp));
+        for (int g = 1; g <= 2; ++g)
+          {
+            auto stress = [g](const solve::EstimatedQuantities &q) {
+              return g == 1 ? q.root_stress_pinion : q.root_stress_gear;
+            };
+            std::size_t m = k0;
+            for (std::size_t k = k0; k < k0 + n_positions; ++k)
+              m = stress(a[k]) > stress(a[m]) ? k : m;
+            if (stress(a[m]) > 0)
+              r[2] = std::max(r[2], std::abs((stress(b[m]) - stress(a[m])) * ff / stress(a[m])));
+          }
+      }
+    if (!contact)
+      r[0] = r[1] = r[3] = nan;
+    if (!fillet)
+      r[2] = nan;
+    return r;
+  }
+
+  TargetOutcome run_to_target(solve::GearContactInput &in, const AccuracyTarget &target, const FixedSettings &fixed,
+                              const TargetOptions &options)
+  {
+    in.require_external("Solve/Target");
+    if (!target.active())
+      throw InputError("Solve/Target", "none", "at least one tolerance");
+    const auto t0 = Clock::now();
+    TargetOutcome o;
+    o.target    = target;
+    o.order     = options.order;
+    o.choice    = choose_model(*in.pair, in.mesh, in.fe.degree, target, fixed);
+    o.positions = target_sample_positions(*in.pair);
+    o.torques   = in.solve.torques;
+    Sizes cand;
+    cand.mesh[0] = o.choice.mesh[0];
+    cand.mesh[1] = o.choice.mesh[1];
+    cand.degree  = o.choice.degree;
+    const double m = in.pair->gear(1).parameters().rack.module;
+    const bool asks_contact = target.asks(Quantity::mean_ste) || target.asks(Quantity::pp_ste) ||
+                              target.asks(Quantity::p_max);
+    const bool asks_fillet = target.asks(Quantity::root_stress);
+
+    // The companion: coarser by 2 where the asked quantities live, but inside the range where
+    // the error is asymptotic (p-p STE: m/20; root stress and p_max: the flank height); where
+    // that leaves less than a factor 1.4, finer by 2 instead.
+    double rc = asks_contact ? 2 : 1, rf = asks_fillet ? 2 : 1;
+    if (asks_contact || asks_fillet)
+      {
+        double h_max = target.asks(Quantity::pp_ste) ? m / 20 : m / 8;
+        if ((asks_fillet || target.asks(Quantity::p_max)) && o.choice.flank_height > 0)
+          h_max = std::min(h_max, o.choice.flank_height);
+        const double h = cand.mesh[0].h_contact;
+        if (rc == 1 && asks_fillet)
+          rc = 1; // the root stress alone: the contact group stays
+        else
+          rc = std::min(rc, h_max / h);
+        if (rc < 1.4 && asks_contact)
+          rc = 0.5;
+        else if (rc < 1.4)
+          rc = 1;
+      }
+    std::unique_ptr<contact::GearContactModel> model;
+    Sizes companion = scaled(cand, rc, rf);
+    o.levels.push_back(solve_level(in, companion, "companion", o, options, model));
+    model.reset();
+
+    const std::size_t sweep_positions = in.positions().size() * o.torques.size();
+    std::array<double, n_quantities> carried;
+    carried.fill(nan);
+    for (int k = 0;; ++k)
+      {
+        Level l = solve_level(in, cand, "candidate", o, options, model);
+        // h of the level before / h of this one, from the sizes built.
+        const double rho_c = o.levels.back().h_contact / l.h_contact;
+        const double rho_f = o.levels.back().h_fillet / l.h_fillet;
+        l.rho_contact = rho_c;
+        l.rho_fillet  = rho_f;
+        l.estimate  = estimate_relative(l.samples, o.levels.back().samples, o.positions.size(), rho_c, rho_f,
+                                        options.order);
+        for (int q = 0; q < n_quantities; ++q)
+          if (!std::isfinite(l.estimate[q]))
+            l.estimate[q] = carried[q];
+        double worst_c = 0, worst_f = 0;
+        for (int q = 0; q < n_quantities; ++q)
+          if (target.tolerance[q] > 0)
+            {
+              const double ratio = std::isfinite(l.estimate[q]) ? l.estimate[q] / target.tolerance[q] : 2.0;
+              if (ratio > 1)
+                (q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c) =
+                  std::max(q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c, ratio);
+            }
+        o.levels.push_back(l);
+        if (worst_c == 0 && worst_f == 0)
+          {
+            o.met = true;
+            break;
+          }
+        if (fixed.h_contact)
+          worst_c = 0;
+        if (fixed.h_fillet)
+          worst_f = 0;
+        if (worst_c == 0 && worst_f == 0)
+          {
+            o.stop_reason = "the sizes the failing quantities need are set in the input";
+            break;
+          }
+        if (k + 1 >= options.max_levels)
+          {
+            o.stop_reason = "Solve/Target: " + std::to_string(options.max_levels) + " candidate levels tried";
+            break;
+          }
+        // The contact group moves to the rung at or below h / factor.
+        const double h_now = cand.mesh[0].h_contact;
+        const double fc = worst_c > 0 ? h_now / snap_finer(h_now / refinement(worst_c, options.order), m) : 1;
+        const double ff = worst_f > 0 ? refinement(worst_f, options.order) : 1;
+        const double per_position = l.seconds_samples / std::max<std::size_t>(1, l.samples.size());
+        const double next = (l.seconds_setup + per_position * sweep_positions) * std::pow(std::max(fc, ff), 1.5);
+        if (options.cost_cap > 0 && since(t0) + next > options.cost_cap)
+          {
+            std::ostringstream s;
+            s << std::setprecision(3) << "the next level (refined " << fc << " x on the contact, " << ff
+              << " x on the fillet) would take about " << next << " s, beyond Solve/Cost cap " << options.cost_cap
+              << " s";
+            o.stop_reason = s.str();
+            break;
+          }
+        if (options.out)
+          *options.out << "model choice: estimate above the target; refining h_contact by " << fc << ", h_fillet by "
+                       << ff << std::endl;
+        model.reset();
+        carried = l.estimate;
+        cand    = scaled(cand, 1 / fc, 1 / ff);
+      }
+    o.delivered                = o.levels.size() - 1;
+    o.levels.back().role       = "delivered";
+    in.mesh[0]                 = cand.mesh[0];
+    in.mesh[1]                 = cand.mesh[1];
+    in.fe.degree               = cand.degree;
+    o.model                    = std::move(model);
+    o.seconds                  = since(t0);
+    return o;
+  }
+
+  void rescale_pp(TargetOutcome &o, const std::vector<double> &pp_sweep)
+  {
+    if (o.delivered == 0 || !o.target.asks(Quantity::pp_ste))
+      return;
+    Level &l = o.levels[o.delivered];
+    if (std::abs(l.rho_contact - 1) <= 0.2)
+      return; // carried from a level with the same contact sizes
+    const auto r = estimate_relative(l.samples, o.levels[o.delivered - 1].samples, o.positions.size(),
+                                     l.rho_contact, 1, o.order, &pp_sweep);
+    if (std::isfinite(r[1]))
+      l.estimate[1] = r[1];
+  }
+
+  std::string model_choice_summary(const TargetOutcome &o)
+  {
+    std::ostringstream s;
+    const Level &d = o.delivered_level();
+    s << "Model choice (Solve/Target: " << to_string(o.target) << "): " << (o.met ? "met" : "NOT met")
+      << " with h_contact " << mm(d.h_contact) << " mm, h_fillet " << mm(d.h_fillet) << " mm, Q" << d.degree
+      << ", " << d.dofs << " DoFs.\n";
+    if (!o.stop_reason.empty())
+      s << "Refinement stopped: " << o.stop_reason << ".\n";
+    s << "\nFirst guess, from the measured model ladder (docs/model-choice.md):\n";
+    for (const auto &r : o.choice.reasons)
+      s << "- " << r << "\n";
+    s << "\n| level | role | h_contact [mm] | h_fillet [mm] | degree | DoFs | set-up [s] | samples [s] |";
+    for (const auto *n : AccuracyTarget::names())
+      s << " est. " << n << " |";
+    s << "\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (std::size_t k = 0; k < o.levels.size(); ++k)
+      {
+        const Level &l = o.levels[k];
+        s << "| " << k + 1 << " | " << l.role << " | " << mm(l.h_contact) << " | " << mm(l.h_fillet) << " | Q"
+          << l.degree << " | " << l.dofs << " | " << std::fixed << std::setprecision(1) << l.seconds_setup << " | "
+          << l.seconds_samples << std::defaultfloat << (l.subdivided ? " (subdivided mesh)" : "")
+          << (l.remeshed ? " (remeshed " + std::to_string(l.remeshed) + "x)" : "") << " |";
+        for (int q = 0; q < n_quantities; ++q)
+          s << " " << (o.target.tolerance[q] > 0 ? pc(l.estimate[q]) : "-") << " |";
+        s << "\n";
+      }
+    s << "\nAchieved (estimated relative error of the delivered run, Richardson order " << o.order
+      << ", samples (A+B)/2, B, (B+D)/2, D at every torque) against the target:";
+    for (int q = 0; q < n_quantities; ++q)
+      if (o.target.tolerance[q] > 0)
+        s << " " << AccuracyTarget::names()[q] << " " << pc(d.estimate[q]) << " / " << pc(o.target.tolerance[q])
+          << (d.estimate[q] <= o.target.tolerance[q] ? "" : " (above)") << ";";
+    s << " choice " << std::fixed << std::setprecision(1) << o.seconds << " s.\n";
+    return s.str();
+  }
+
+  std::string model_choice_json(const TargetOutcome &o)
+  {
+    std::ostringstream s;
+    const auto &keys = AccuracyTarget::keys();
+    auto quantities  = [&](const std::array<double, n_quantities> &v) {
+      std::ostringstream q;
+      q << "{";
+      for (int i = 0; i < n_quantities; ++i)
+        q << (i ? ", " : "") << "\"" << keys[i] << "\": " << json(v[i]);
+      q << "}";
+      return q.str();
+    };
+    const Level &d = o.delivered_level();
+    s << "{\n    \"target\": " << quantities(o.target.tolerance) << ",\n    \"preset\": \"" << o.target.preset
+      << "\",\n    \"met\": " << (o.met ? "true" : "false") << ",\n    \"stop_reason\": \"" << o.stop_reason
+      << "\",\n    \"chosen\": {\"model\": \""
+      << (o.choice.mesh[0].model == mesh::GearMeshParameters::Model::sector ? "sector" : "full gear")
+      << "\", \"degree\": " << d.degree << ", \"h_contact_mm\": " << json(d.h_contact * 1e3)
+      << ", \"h_fillet_mm\": " << json(d.h_fillet * 1e3) << ", \"dofs\": " << d.dofs
+      << "},\n    \"estimate\": " << quantities(d.estimate) << ",\n    \"order\": " << json(o.order)
+      << ",\n    \"sample_roll_deg\": [";
+    for (std::size_t i = 0; i < o.positions.size(); ++i)
+      s << (i ? ", " : "") << json(o.positions[i] / units::deg);
+    s << "],\n    \"levels\": [";
+    for (std::size_t k = 0; k < o.levels.size(); ++k)
+      {
+        const Level &l = o.levels[k];
+        s << (k ? "," : "") << "\n      {\"role\": \"" << l.role << "\", \"h_contact_mm\": " << json(l.h_contact * 1e3)
+          << ", \"h_fillet_mm\": " << json(l.h_fillet * 1e3) << ", \"degree\": " << l.degree
+          << ", \"dofs\": " << l.dofs << ", \"subdivided\": " << (l.subdivided ? "true" : "false")
+          << ", \"remeshed\": " << l.remeshed
+          << ", \"setup_seconds\": " << json(l.seconds_setup)
+          << ", \"samples_seconds\": " << json(l.seconds_samples) << ", \"estimate\": " << quantities(l.estimate)
+          << "}";
+      }
+    s << "\n    ],\n    \"reasons\": [";
+    for (std::size_t k = 0; k < o.choice.reasons.size(); ++k)
+      {
+        std::string r = o.choice.reasons[k];
+        std::string esc;
+        for (const char c : r)
+          esc += c == '"' ? std::string("\\\"") : std::string(1, c);
+        s << (k ? ", " : "") << "\n      \"" << esc << "\"";
+      }
+    s << "\n    ],\n    \"seconds\": " << json(o.seconds) << "\n  }";
+    return s.str();
+  }
+} // namespace gearfem::choice

@@ -1,0 +1,103 @@
+#pragma once
+// Proof of a model choice on the run itself (`Solve/Target`). The first guess of
+// choose_model is solved at four sample positions of the line of action at every torque,
+// together with a companion model whose sizes differ where the asked quantities need them
+// (h_contact for STE and p_max, h_fillet for the root stress): coarser by 2, so that the proof
+// costs a fraction of the run. Richardson with order p between the two levels a (the candidate)
+// and b (the companion), h_b = rho h_a,
+//   e_a = Q_exact - Q_a ~ (Q_b - Q_a) / (1 - rho^p),
+// estimates the candidate's error. Where it exceeds the target, the sizes of the failing
+// quantities are refined by the factor the estimate asks for, the candidate becomes the
+// companion of the next level, and so on, within a cost cap. The sweep then runs on the
+// accepted level, and its estimate is reported beside each quantity.
+#include "choice/choose.h"
+#include "solve/error_estimate.h"
+#include "solve/input.h"
+
+#include <array>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace gearfem::choice
+{
+  struct TargetOptions
+  {
+    /// Wall-time cap [s] of the whole run (levels, samples and the predicted sweep); 0: none.
+    double cost_cap  = 1800;
+    int max_levels   = 5;    ///< candidates tried at most
+    double order     = 2;    ///< p of the Richardson estimate
+    post::PostOptions post;  ///< evaluation thresholds (as in the sweep)
+    std::ostream *out = nullptr;
+  };
+
+  /// One model tried.
+  struct Level
+  {
+    std::string role;               ///< "companion", "candidate", "delivered"
+    double h_contact = 0, h_fillet = 0; ///< gear 1 [m]
+    unsigned int degree = 2, dofs = 0;
+    double seconds_setup = 0, seconds_samples = 0;
+    /// A gear's all-quad mesh came from gmsh's subdivision fallback (slower set-up, less
+    /// regular cells).
+    bool subdivided = false;
+    int remeshed    = 0; ///< sizes nudged after a failed first quad recombination
+    /// Torque-major samples (target_sample_positions x torques).
+    std::vector<solve::EstimatedQuantities> samples;
+    /// Estimated relative error per quantity (Quantity order) of this level, from it and the
+    /// level before it; NaN where no estimate (the companion).
+    std::array<double, n_quantities> estimate{};
+    /// h of the level it was estimated against / h of this level, contact and fillet groups.
+    double rho_contact = 1, rho_fillet = 1;
+  };
+
+  struct TargetOutcome
+  {
+    AccuracyTarget target;
+    ModelChoice choice;             ///< the first guess
+    std::vector<Level> levels;      ///< in the order built
+    std::size_t delivered = 0;      ///< index into levels
+    bool met = false;
+    std::string stop_reason;        ///< why the refinement stopped short, or empty
+    double order = 2;               ///< p of the estimate
+    double seconds = 0;             ///< wall time of the choice (levels and samples) [s]
+    std::vector<double> positions;  ///< sample roll angles [rad]
+    std::vector<double> torques;
+    /// The delivered model, built; the input's mesh and FE degree are set to it.
+    std::unique_ptr<contact::GearContactModel> model;
+    const Level &delivered_level() const { return levels.at(delivered); }
+  };
+
+  /// The sample positions: (A+B)/2 (double-pair zone), B (the gear's highest point of single
+  /// contact), (B+D)/2 (single-pair zone), D (the pinion's).
+  std::vector<double> target_sample_positions(const geometry::GearPair &pair);
+
+  /// Estimated relative errors of level `a` from its samples and those of level `b`
+  /// (`rho_contact`, `rho_fillet`: h_b / h_a of the two size groups; a group with |rho - 1| <=
+  /// 0.2 gives NaN for its quantities), with `n_positions` positions per torque and order `p`:
+  /// mean STE: the largest |e|/Q of the STE samples; p-p STE: (max e - min e) over the samples
+  /// of a torque / (max Q - min Q) there; root stress: |e|/Q at the sample of each gear's
+  /// largest stress; p_max: the largest |e|/Q. `pp` (per torque [m]): the p-p STE that the
+  /// p-p error is relative to, instead of the samples' max Q - min Q.
+  std::array<double, n_quantities> estimate_relative(const std::vector<solve::EstimatedQuantities> &a,
+                                                     const std::vector<solve::EstimatedQuantities> &b,
+                                                     std::size_t n_positions, double rho_contact,
+                                                     double rho_fillet, double p,
+                                                     const std::vector<double> *pp = nullptr);
+
+  /// Choose, prove and refine for `in` (its mesh and FE degree are replaced by the delivered
+  /// level's). Throws SolverError when a sample solve fails; InputError for an internal pair.
+  TargetOutcome run_to_target(solve::GearContactInput &in, const AccuracyTarget &target, const FixedSettings &fixed,
+                              const TargetOptions &options);
+
+  /// With the sweep done: the p-p estimate relative to each torque's swept p-p STE [m]
+  /// instead of the samples' (the samples see the zones, the sweep the whole cycle).
+  void rescale_pp(TargetOutcome &o, const std::vector<double> &pp_sweep);
+
+  /// Markdown for the summary: the target, the choice and why, each level, the achieved
+  /// estimate against the target.
+  std::string model_choice_summary(const TargetOutcome &o);
+  /// JSON object (run.json member `model_choice`, docs/output-format.md).
+  std::string model_choice_json(const TargetOutcome &o);
+} // namespace gearfem::choice

@@ -1,0 +1,213 @@
+// Accuracy-driven model choice (choice/). References:
+// - parse_target: the grammar and the presets of `Solve/Target` (docs/model-choice.md);
+// - choose_model: the rules stated in choice/choose.h (measured ladder, validation/speed_vs_error),
+//   and the flank height r_SAP - r_Ff of the Siasos 2010 23/69 pair computed here from the
+//   line of action and the form circle (0.190 mm in validation/RESULTS.md);
+// - estimate_relative: Richardson is exact for Q(h) = Q0 + C h^2 (closed form), with the
+//   companion coarser or finer;
+// - fixed_settings: what the input text sets;
+// - run_to_target on 3-tooth sectors: the delivered estimate meets a loose target, and the
+//   delivered level's samples equal a direct solve of that model (solver tolerance).
+#include "choice/parameters.h"
+#include "choice/to_target.h"
+#include "common/fixtures.h"
+#include "base/errors.h"
+#include "solve/input.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gearfem;
+using choice::Quantity;
+
+namespace
+{
+  solve::GearContactInput parse(const std::string &text, dealii::ParameterHandler &prm)
+  {
+    solve::declare_gear_contact_input(prm);
+    prm.parse_input_from_string(text);
+    return solve::parse_gear_contact_input(prm);
+  }
+
+  const char *seed001 = R"(
+subsection Rack
+  set Module = 4
+end
+subsection Gear 1
+  set Number of teeth = 23
+  set Face width      = 75
+end
+subsection Gear 2
+  set Number of teeth = 69
+  set Face width      = 70
+end
+)";
+} // namespace
+
+TEST(ChoiceTarget, ParsesListsPresetsAndRefusesBadText)
+{
+  const auto t = choice::parse_target("mean STE 1, p-p STE 2 %, root stress 3");
+  EXPECT_DOUBLE_EQ(t[Quantity::mean_ste], 0.01);
+  EXPECT_DOUBLE_EQ(t[Quantity::pp_ste], 0.02);
+  EXPECT_DOUBLE_EQ(t[Quantity::root_stress], 0.03);
+  EXPECT_FALSE(t.asks(Quantity::p_max));
+  EXPECT_FALSE(choice::parse_target("none").active());
+  const auto d = choice::parse_target("Dynamics tables");
+  EXPECT_EQ(d.preset, "dynamics tables");
+  EXPECT_DOUBLE_EQ(d[Quantity::mean_ste], 0.01);
+  EXPECT_DOUBLE_EQ(d[Quantity::pp_ste], 0.02);
+  EXPECT_DOUBLE_EQ(choice::parse_target("rating check")[Quantity::p_max], 0.05);
+  for (const char *bad : {"mean STE", "mean STE 0", "mean STE 80", "stress 3", "mean STE 1, mean STE 2", "fast"})
+    {
+      try
+        {
+          choice::parse_target(bad);
+          ADD_FAILURE() << bad;
+        }
+      catch (const InputError &e)
+        {
+          EXPECT_NE(std::string(e.what()).find("Solve/Target"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(ChoiceRules, FollowTheLadderAndCatchTheFlankHeight)
+{
+  dealii::ParameterHandler prm;
+  auto in = parse(test::parker_pair(), prm);
+  const double m = 3e-3;
+  // The coarsest rung predicted within 1.1 x the tolerance: p-p 1 % -> m/30 (1.1 %); p-p 0.5 %
+  // -> m/45 (0.49 %); mean STE 1 % -> m/15 (0.86 %); root stress 3 %: h_fillet m/12.
+  auto c = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("p-p STE 1, root stress 3"), {});
+  EXPECT_NEAR(c.mesh[0].h_contact, m / 30, 1e-12);
+  EXPECT_NEAR(choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("p-p STE 0.5"), {}).mesh[0].h_contact,
+              m / 45, 1e-12);
+  EXPECT_NEAR(choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 1"), {}).mesh[0].h_contact,
+              m / 15, 1e-12);
+  EXPECT_NEAR(choice::snap_finer(m / 25, m), m / 30, 1e-12);
+  EXPECT_NEAR(c.mesh[0].h_fillet, m / 12, 1e-12);
+  EXPECT_EQ(c.degree, 2u);
+  // Loose STE only: Q1, the coarsest rung m/8 (predicted 3.0 %), coarse fillet.
+  c = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 5"), {});
+  EXPECT_EQ(c.degree, 1u);
+  EXPECT_NEAR(c.mesh[0].h_contact, m / 8, 1e-12);
+  EXPECT_NEAR(c.mesh[0].h_fillet, m / 8, 1e-12);
+  // A set entry is kept.
+  choice::FixedSettings fixed;
+  fixed.h_contact = fixed.degree = true;
+  in.mesh[0].h_contact = in.mesh[1].h_contact = 0.3e-3;
+  c = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 5"), fixed);
+  EXPECT_DOUBLE_EQ(c.mesh[0].h_contact, 0.3e-3);
+  EXPECT_EQ(c.degree, 2u);
+
+  // Siasos 2010 23/69: a root-stress target caps h_contact at the flank height.
+  dealii::ParameterHandler prm2;
+  const auto s = parse(seed001, prm2);
+  const auto &pair = *s.pair;
+  const double flank = std::min(pair.point("A").r1 - pair.gear(1).radii().form,
+                                pair.point("E").r2 - pair.gear(2).radii().form);
+  EXPECT_NEAR(flank, 0.190e-3, 0.005e-3);
+  c = choice::choose_model(pair, s.mesh, 2, choice::parse_target("mean STE 2, root stress 3"), {});
+  EXPECT_NEAR(c.flank_height, flank, 1e-12);
+  EXPECT_LE(c.mesh[0].h_contact, flank * (1 + 1e-12));
+  // Without a stress target the mean-STE rule alone (m/10 sqrt(2/1.94)) is coarser.
+  c = choice::choose_model(pair, s.mesh, 2, choice::parse_target("mean STE 2"), {});
+  EXPECT_GT(c.mesh[0].h_contact, flank);
+}
+
+TEST(ChoiceEstimate, RichardsonIsExactForOrderTwo)
+{
+  // Two torques x four positions; Q(h) = Q0 + C h^2 per sample and quantity.
+  const double h = 0.1e-3;
+  auto level = [](double hh) {
+    std::vector<solve::EstimatedQuantities> v;
+    for (int t = 0; t < 2; ++t)
+      for (int i = 0; i < 4; ++i)
+        {
+          solve::EstimatedQuantities q;
+          q.ste                = (10 + i + t) * 1e-6 + (0.5 + 0.1 * i) * 1e-6 * std::pow(hh / 1e-4, 2);
+          q.root_stress_pinion = (100 + 10 * i) * 1e6 * (1 - 0.01 * std::pow(hh / 1e-4, 2));
+          q.root_stress_gear   = 80e6 * (1 + 0.02 * std::pow(hh / 1e-4, 2));
+          q.p_max              = 600e6 * (1 + 0.03 * std::pow(hh / 1e-4, 2));
+          v.push_back(q);
+        }
+    return v;
+  };
+  const auto a = level(h);
+  for (const double rho : {2.0, 0.5, 1.6})
+    {
+      const auto b = level(rho * h);
+      const auto e = choice::estimate_relative(a, b, 4, rho, rho, 2);
+      // Exact relative errors of level a against Q0.
+      double mean = 0, pp = 0, root = 0, p = 0;
+      for (int t = 0; t < 2; ++t)
+        {
+          for (int i = 0; i < 4; ++i)
+            {
+              const auto &q = a[4 * t + i];
+              mean = std::max(mean, (0.5 + 0.1 * i) * 1e-6 / q.ste);
+              p    = std::max(p, 0.03 * 600e6 / q.p_max);
+            }
+          // STE highest at i = 3, lowest at i = 0: p-p error (0.8 - 0.5) um.
+          pp   = std::max(pp, 0.3e-6 / (a[4 * t + 3].ste - a[4 * t].ste));
+          root = std::max({root, 0.01 * 130e6 / a[4 * t + 3].root_stress_pinion, 0.02 * 80e6 / a[4 * t].root_stress_gear});
+        }
+      EXPECT_NEAR(e[0], mean, 1e-9 * mean) << rho;
+      EXPECT_NEAR(e[1], pp, 1e-9 * pp) << rho;
+      EXPECT_NEAR(e[2], root, 1e-9 * root) << rho;
+      EXPECT_NEAR(e[3], p, 1e-9 * p) << rho;
+    }
+  // A group that did not change has no estimate.
+  const auto e = choice::estimate_relative(a, level(2 * h), 4, 1, 2, 2);
+  EXPECT_TRUE(std::isnan(e[0]) && std::isnan(e[1]) && std::isnan(e[3]));
+  EXPECT_TRUE(std::isfinite(e[2]));
+}
+
+TEST(ChoiceParameters, TellSetEntriesFromDefaults)
+{
+  dealii::ParameterHandler prm;
+  parse(test::parker_pair("subsection Mesh\n  set h_fillet = 0.25\nend\nsubsection Finite elements\n  set Degree = 2\nend\n"),
+        prm);
+  const auto f = choice::fixed_settings(prm);
+  EXPECT_TRUE(f.h_fillet);   // set, even to its default value
+  EXPECT_TRUE(f.degree);
+  EXPECT_FALSE(f.h_contact);
+  EXPECT_FALSE(f.h_corner);
+  EXPECT_FALSE(f.model);
+}
+
+TEST(ChoiceRun, ProvesALooseTargetOnSectors)
+{
+  dealii::ParameterHandler prm;
+  auto in = parse(test::parker_pair(R"(
+subsection Mesh
+  set Model = sector
+  set Sector teeth = 3
+end
+subsection Solve
+  set Torques = 200
+end
+)"),
+                  prm);
+  const auto fixed = choice::fixed_settings(prm);
+  EXPECT_TRUE(fixed.model);
+  choice::TargetOptions options;
+  const auto o = choice::run_to_target(in, choice::parse_target("mean STE 3, root stress 10"), fixed, options);
+  ASSERT_GE(o.levels.size(), 2u);
+  EXPECT_EQ(o.levels.front().role, "companion");
+  EXPECT_EQ(o.delivered_level().role, "delivered");
+  EXPECT_TRUE(o.met);
+  const auto &d = o.delivered_level();
+  EXPECT_LE(d.estimate[0], 0.03);
+  EXPECT_LE(d.estimate[2], 0.10);
+  EXPECT_DOUBLE_EQ(in.mesh[0].h_contact, d.h_contact);
+  EXPECT_EQ(in.fe.degree, d.degree);
+  ASSERT_TRUE(o.model);
+  // The delivered model is the one sampled: a direct solve at the first sample agrees.
+  const auto q = solve::solve_samples(*o.model, {o.positions[0]}, {200.0}, options.post);
+  EXPECT_NEAR(q[0].ste, d.samples[0].ste, 1e-7 * d.samples[0].ste);
+  EXPECT_NE(choice::model_choice_json(o).find("\"met\": true"), std::string::npos);
+}
