@@ -73,8 +73,8 @@ namespace gearfem::choice
 
     /// Build `sizes` on `in`'s pair and solve the samples: one Level.
     /// Build `sizes` on `in`'s pair and solve the samples: one Level. Where gmsh's first quad
-    /// recombination fails, the fillet group is made 15 % finer and meshed again (at most 3
-    /// times, then the slow fallbacks are allowed): a slightly finer fillet keeps the
+    /// recombination fails, the fillet group is made 15 % finer and meshed again, now with
+    /// gmsh's slow retries and subdivision fallback allowed should it fail again: a slightly finer fillet keeps the
     /// accuracy asked for and avoids the retries and the subdivision fallback (FZG type C: 18-33 s
     /// of set-up instead of 3.5 s). `sizes` returns the sizes built.
     Level solve_level(const solve::GearContactInput &in, Sizes &sizes, const std::string &role,
@@ -94,7 +94,7 @@ namespace gearfem::choice
       for (int attempt = 0;; ++attempt)
         {
           for (auto &g : sizes.mesh)
-            g.quad_fallbacks = attempt >= 3;
+            g.quad_fallbacks = attempt >= 1;
           try
             {
               model = std::make_unique<contact::GearContactModel>(*in.pair, sizes.mesh, in.material, fe, in.contact,
@@ -134,6 +134,8 @@ namespace gearfem::choice
     }
   } // namespace
 
+  const std::vector<std::size_t> zone_samples = {0, 2};
+
   std::vector<double> target_sample_positions(const geometry::GearPair &pair)
   {
     const double A = pair.point("A").roll_angle, B = pair.point("B").roll_angle, D = pair.point("D").roll_angle;
@@ -143,8 +145,12 @@ namespace gearfem::choice
   std::array<double, n_quantities> estimate_relative(const std::vector<solve::EstimatedQuantities> &a,
                                                      const std::vector<solve::EstimatedQuantities> &b,
                                                      std::size_t n_positions, double rho_contact,
-                                                     double rho_fillet, double p, const std::vector<double> *pp_sweep)
+                                                     double rho_fillet, double p, const std::vector<double> *pp_sweep,
+                                                     const std::vector<std::size_t> &ste_samples)
   {
+    auto ste_sample = [&](std::size_t i) {
+      return ste_samples.empty() || std::find(ste_samples.begin(), ste_samples.end(), i) != ste_samples.end();
+    };
     std::array<double, n_quantities> r{};
     // A group whose size changed by less than 20 % gives no estimate: 1/(1 - rho^p) would
     // amplify the noise of non-nested meshes (a 15 % nudge: factor 2.6).
@@ -155,17 +161,21 @@ namespace gearfem::choice
     for (std::size_t t = 0; t < n_t; ++t)
       {
         const std::size_t k0 = t * n_positions;
-        std::size_t hi = k0, lo = k0;
+        std::size_t hi = n_positions, lo = n_positions; // none yet
         for (std::size_t k = k0; k < k0 + n_positions; ++k)
           {
+            if (a[k].p_max > 0)
+              r[3] = std::max(r[3], std::abs((b[k].p_max - a[k].p_max) * fc / a[k].p_max));
+            if (!ste_sample(k - k0))
+              continue;
             const double e = (b[k].ste - a[k].ste) * fc;
             if (a[k].ste != 0)
               r[0] = std::max(r[0], std::abs(e / a[k].ste));
-            if (a[k].p_max > 0)
-              r[3] = std::max(r[3], std::abs((b[k].p_max - a[k].p_max) * fc / a[k].p_max));
-            hi = a[k].ste > a[hi].ste ? k : hi;
-            lo = a[k].ste < a[lo].ste ? k : lo;
+            hi = hi == n_positions || a[k].ste > a[hi].ste ? k : hi;
+            lo = lo == n_positions || a[k].ste < a[lo].ste ? k : lo;
           }
+        if (hi == n_positions)
+          continue;
         const double pp = pp_sweep && t < pp_sweep->size() ? (*pp_sweep)[t] : a[hi].ste - a[lo].ste;
         if (pp > 0)
           r[1] = std::max(r[1], std::abs(((b[hi].ste - a[hi].ste) - (b[lo].ste - a[lo].ste)) * fc / pp));
@@ -246,7 +256,7 @@ namespace gearfem::choice
         l.rho_contact = rho_c;
         l.rho_fillet  = rho_f;
         l.estimate  = estimate_relative(l.samples, o.levels.back().samples, o.positions.size(), rho_c, rho_f,
-                                        options.order);
+                                        options.order, nullptr, zone_samples);
         for (int q = 0; q < n_quantities; ++q)
           if (!std::isfinite(l.estimate[q]))
             l.estimate[q] = carried[q];
@@ -319,7 +329,7 @@ namespace gearfem::choice
     if (std::abs(l.rho_contact - 1) <= 0.2)
       return; // carried from a level with the same contact sizes
     const auto r = estimate_relative(l.samples, o.levels[o.delivered - 1].samples, o.positions.size(),
-                                     l.rho_contact, 1, o.order, &pp_sweep);
+                                     l.rho_contact, 1, o.order, &pp_sweep, zone_samples);
     if (std::isfinite(r[1]))
       l.estimate[1] = r[1];
   }

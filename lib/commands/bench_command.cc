@@ -25,9 +25,9 @@ namespace gearfem::commands
     c.description = "Sample runs:\n"
                     "  gearfem bench analytical\n"
                     "  gearfem bench dynamics\n"
-                    "  gearfem bench fem inputs/demo.prm\n"
-                    "  gearfem bench solve inputs/demo.prm\n"
-                    "  gearfem bench condensed inputs/demo.prm\n"
+                    "  gearfem bench fem inputs/demo_fixed_mesh.prm\n"
+                    "  gearfem bench solve inputs/demo_fixed_mesh.prm\n"
+                    "  gearfem bench condensed inputs/demo_fixed_mesh.prm\n"
                     "Figures are printed; validation/RESULTS.md records them with the command.";
     c.needs_input = false;
     c.parse_input = false;
@@ -37,7 +37,7 @@ namespace gearfem::commands
       auto input_file = [&] {
         if (ctx.input_file.empty())
           throw InputError("bench " + what + " input file", "(none)", "a .prm file",
-                           "usage: gearfem bench " + what + " inputs/demo.prm");
+                           "usage: gearfem bench " + what + " inputs/demo_fixed_mesh.prm");
         return ctx.input_file;
       };
       if (what == "analytical")

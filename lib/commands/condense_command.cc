@@ -92,8 +92,8 @@ namespace gearfem::commands
                     "re-solves any torque list and any gap-route tip relief of the same design without\n"
                     "meshing or factorising, and writes what `gearfem solve` writes (no VTU).\n"
                     "Sample runs:\n"
-                    "  gearfem condense inputs/demo.prm --output-dir results/demo_condensed\n"
-                    "  gearfem solve inputs/demo.prm --condensed results/demo_condensed/condensed.h5 "
+                    "  gearfem condense inputs/demo_fixed_mesh.prm --output-dir results/demo_condensed\n"
+                    "  gearfem solve inputs/demo_fixed_mesh.prm --condensed results/demo_condensed/condensed.h5 "
                     "--output-dir results/demo_on_cycle\n";
     c.declare = declare;
     c.run     = run;

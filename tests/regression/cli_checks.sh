@@ -2,7 +2,7 @@
 # CLI regression checks for gearfem (see CMakeLists.txt beside this file).
 #   cli_checks.sh bad      GEARFEM FILE.prm   `gearfem <command of line 1>` exits 2, the parameter named on line 3
 #                                             ("# expect: ...") in stderr, no output left
-#   cli_checks.sh demo     GEARFEM SRC_DIR    profile run of inputs/demo.prm
+#   cli_checks.sh demo     GEARFEM SRC_DIR    profile run of inputs/demo_fixed_mesh.prm
 #   cli_checks.sh validate GEARFEM SRC_DIR    every inputs/*.prm passes --validate
 #   cli_checks.sh basics   GEARFEM SRC_DIR    --help, --version, unknown command, missing file
 #   cli_checks.sh tablefile GEARFEM SRC_DIR   dynamics with HDF5 mesh tables written by h5py
@@ -254,7 +254,7 @@ PY
       "$work/out/gearbox_life.csv" || fail "Siasos 2010 lives not reproduced"
     ;;
   demo)
-    "$gearfem" profile "$arg/inputs/demo.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
+    "$gearfem" profile "$arg/inputs/demo_fixed_mesh.prm" --output-dir "$work/out" > "$work/stdout" 2>&1 ||
       { cat "$work/stdout"; fail "demo run failed"; }
     cat "$work/stdout"
     for f in profile_gear1.csv profile_gear2.csv pair.csv contact_path.csv input.prm run.json; do
@@ -313,7 +313,7 @@ PY
       "$gearfem" bench "$t" --validate > "$work/o" 2>&1 || { cat "$work/o"; fail "bench $t not recognised"; }
     done
     for t in fem solve; do
-      "$gearfem" bench "$t" "$arg/inputs/demo.prm" --validate > "$work/o" 2>&1 ||
+      "$gearfem" bench "$t" "$arg/inputs/demo_fixed_mesh.prm" --validate > "$work/o" 2>&1 ||
         { cat "$work/o"; fail "bench $t not recognised"; }
     done
     "$gearfem" bench nosuch --validate > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown bench target not exit 2"

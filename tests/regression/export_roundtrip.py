@@ -5,7 +5,7 @@ compared with the source re-interpolated here.
 
     export_roundtrip.py GEARFEM SRC_DIR
 
-Pair: inputs/demo.prm (Parker 50/50, m 3, standard, a = 150 mm). Sources:
+Pair: inputs/demo_fixed_mesh.prm (Parker 50/50, m 3, standard, a = 150 mm). Sources:
   tt1  one-sided torque table T = r_b1 k0 (1 + a cos z1 theta) (delta + delta^2/d0), 48 x 25
   tt2  the same, two-sided (format 2), backlash 80 um, its own back branch
   kt   stiffness table k(theta, F) = k0 (1 + a cos z1 theta)(1 + F/F0), 48 x 9
@@ -49,7 +49,7 @@ def rel_err(x, y):
 
 def geometry_lines():
     lines, keep = [], False
-    for line in open(os.path.join(src, "inputs", "demo.prm")):
+    for line in open(os.path.join(src, "inputs", "demo_fixed_mesh.prm")):
         if line.startswith("subsection Material"):
             break
         if line.startswith("subsection Rack"):

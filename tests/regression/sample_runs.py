@@ -22,7 +22,7 @@ gearfem, src = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 # 2 naming the entry and "file not found"), not on anything else.
 NEEDS = {'calibrate validation/analytical_vs_fe/calibrate.prm':
          ('validation/parker_ste/results/plane_stress/results.h5', 'Calibration/Results files'),
-         'solve inputs/demo.prm --condensed results/demo_condensed/condensed.h5':
+         'solve inputs/demo_fixed_mesh.prm --condensed results/demo_condensed/condensed.h5':
          ('results/demo_condensed/condensed.h5', 'condensed cycle file'),
          'solve inputs/condense_demo.prm --condensed results/condense_demo/condensed.h5':
          ('results/condense_demo/condensed.h5', 'condensed cycle file')}

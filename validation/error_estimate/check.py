@@ -39,7 +39,7 @@ def main():
     p = e["order"]
     head = " | ".join(f"Q(h {h:g})" for h, _ in refs)
     ratios = " | ".join(f"est / (Q(h {h:g}) - Q_h)" for h, _ in refs)
-    lines = [f"Demo (inputs/demo.prm), h_contact {a.h:g} mm; refined level {e['h_contact_fine_mm']:g} mm; references "
+    lines = [f"Demo (inputs/demo_fixed_mesh.prm), h_contact {a.h:g} mm; refined level {e['h_contact_fine_mm']:g} mm; references "
              + ", ".join(f"{h:g}" for h, _ in refs) + f" mm (fine sizes scaled alike); assumed order p = {p:g}. "
              f"True error = Q(h {h_true:g}) - Q_h.", "",
              f"| T1 [N m] | sample | roll [deg] | quantity | Q_h | Q_h/2 | {head} | true error | estimate | {ratios} |",

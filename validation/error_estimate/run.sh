@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Per-run discretisation-error estimate (`Solve/Error estimate`; see
-# README.md) on the demo (inputs/demo.prm: 50/50 m 3, 200 N m, h_contact 0.08 mm):
+# README.md) on the demo (inputs/demo_fixed_mesh.prm: 50/50 m 3, 200 N m, h_contact 0.08 mm):
 #   1. the demo with the estimate on, one run: the sweep and the estimate timed in the same
 #      process (run.json: run_sweep_seconds, seconds_setup + seconds_solve);
 #   2. the references at the estimate's sample positions only (Positions = list, roll angles
@@ -14,13 +14,13 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
-demo="$root/inputs/demo.prm"
-h_demo=0.08 h_fillet_demo=0.25  # demo.prm's h_contact; Mesh/h_fillet is its default
+demo="$root/inputs/demo_fixed_mesh.prm"
+h_demo=0.08 h_fillet_demo=0.25  # demo_fixed_mesh.prm's h_contact; Mesh/h_fillet is its default
 
 echo "== 1/3: the demo with Solve/Error estimate = true"
 { cat "$demo"; printf 'subsection Solve\n  set Error estimate = true\n  set Plots = false\nend\n'; } > "$out/estimate.prm"
 grep -q "h_contact = $h_demo" "$out/estimate.prm"
-grep -q "set h_fillet" "$demo" && { echo "demo.prm sets h_fillet: update h_fillet_demo in run.sh"; false; }
+grep -q "set h_fillet" "$demo" && { echo "demo_fixed_mesh.prm sets h_fillet: update h_fillet_demo in run.sh"; false; }
 nice -n 15 "$gearfem" solve "$out/estimate.prm" --output-dir "$out/estimate" | tee "$out/estimate.log"
 
 rolls=$(/usr/bin/python3 -c "

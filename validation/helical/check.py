@@ -22,7 +22,7 @@ import iso_reference as iso  # noqa: E402
 EPS = ["0", "0.25", "0.5", "0.75", "1", "1.25", "1.5", "1.75", "2"]
 ISO_C = "ISO 6336-1:2006 7.6 method C, K = 1 + F_by c_gb / (2 F_m/b) (sqrt branch above 2)"
 ISO_B = "ISO 6336-1:2006 clause 9 method B (iso_reference.py; ISO/TR 6336-30 ex. 1 values)"
-# The Parker pair of inputs/demo.prm: z 50/50, m 3 mm, alpha 20 deg, b 20 mm, a 150 mm, 200 N m.
+# The Parker pair of inputs/demo_fixed_mesh.prm: z 50/50, m 3 mm, alpha 20 deg, b 20 mm, a 150 mm, 200 N m.
 PARKER = dict(z=50, m=3e-3, alpha=math.radians(20), b=20e-3, T=200.0)
 
 

@@ -7,7 +7,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
 prm() { # prm NAME BETA SLICES COUPLING_LENGTH MISALIGNMENT [COUPLING]: the demo pair with a Helical section
-  { cat "$root/inputs/demo.prm"
+  { cat "$root/inputs/demo_fixed_mesh.prm"
     printf 'subsection Solve\n  set VTU = none\n  set Plots = false\nend\n'
     printf 'subsection Helical\n  set Rack section = transverse\n  set Helix angle = %s\n  set Slices = %s\n' "$2" "$3"
     printf '  set Coupling = %s\n' "${6:-bending}"
@@ -20,7 +20,7 @@ run() { # run NAME [args]: gearfem helical on $out/NAME.prm into $out/NAME
   grep -E "^T |^build" "$out/$n.log"
 }
 echo "== spur_fe: the demo's full-FE cycle (40 positions), for the cost ratio"
-{ cat "$root/inputs/demo.prm"; printf 'subsection Solve\n  set VTU = none\n  set Plots = false\nend\n'; } > "$out/spur_fe.prm"
+{ cat "$root/inputs/demo_fixed_mesh.prm"; printf 'subsection Solve\n  set VTU = none\n  set Plots = false\nend\n'; } > "$out/spur_fe.prm"
 "$gearfem" solve "$out/spur_fe.prm" --output-dir "$out/spur_fe" > "$out/spur_fe.log" 2>&1
 grep -E "^time" "$out/spur_fe.log"
 prm b15_n21 15 21 -1 0

@@ -12,7 +12,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 gearfem="${GEARFEM:-$gearfem}"
 need "$gearfem"
 rm -rf "$out"/*
-demo="$root/inputs/demo.prm"
+demo="$root/inputs/demo_fixed_mesh.prm"
 # The demo without VTU and plots; every variant appends its own Deviations section.
 sed -e 's/set VTU                 = named/set VTU                 = none\n  set Plots               = false/' "$demo" > "$out/base.prm"
 grep -q "set Plots" "$out/base.prm"

@@ -7,12 +7,12 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
-geometry() { sed -n '/^subsection Rack/,/^subsection Mesh/p' "$root/inputs/demo.prm" | sed '$d'; sed -n '/^subsection Mesh/,/^end/p' "$root/inputs/demo.prm"; }
+geometry() { sed -n '/^subsection Rack/,/^subsection Mesh/p' "$root/inputs/demo_fixed_mesh.prm" | sed '$d'; sed -n '/^subsection Mesh/,/^end/p' "$root/inputs/demo_fixed_mesh.prm"; }
 { geometry; cat "$here/condense.prm"; } > "$out/condense.prm"
 start=$(date +%s)
 "$gearfem" condense "$out/condense.prm" --output-dir "$out/condensed" > "$out/condense.log" 2>&1
 echo "condensed cycle and FE-exact table: $(( $(date +%s) - start )) s"
-{ sed -n '/^subsection Rack/,/^subsection Material/p' "$root/inputs/demo.prm" | sed '$d'; cat "$here/export.prm"; } \
+{ sed -n '/^subsection Rack/,/^subsection Material/p' "$root/inputs/demo_fixed_mesh.prm" | sed '$d'; cat "$here/export.prm"; } \
   | sed "s|results/condensed|$out/condensed|" > "$out/export.prm"
 "$gearfem" export "$out/export.prm" --output-dir "$out/export" > "$out/export.log" 2>&1
 sed "s|results/condensed|$out/condensed|" "$here/dynamics.prm" > "$out/dynamics.prm"

@@ -18,7 +18,7 @@ import numpy as np
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--gearfem", required=True)
-    ap.add_argument("--base", default=os.path.join(os.path.dirname(__file__), "..", "..", "inputs", "demo.prm"))
+    ap.add_argument("--base", default=os.path.join(os.path.dirname(__file__), "..", "..", "inputs", "demo_fixed_mesh.prm"))
     ap.add_argument("--h", type=float, nargs="+", default=[0.1, 0.08])
     ap.add_argument("--gap", nargs="+", default=["integrated", "node"])
     ap.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "results", "smoothness"))

@@ -160,6 +160,19 @@ TEST(ChoiceEstimate, RichardsonIsExactForOrderTwo)
       EXPECT_NEAR(e[2], root, 1e-9 * root) << rho;
       EXPECT_NEAR(e[3], p, 1e-9 * p) << rho;
     }
+  // The zone middles only: STE errors (0.5 + 0.1 i) h^2 at i = 0, 2; p-p from their range.
+  {
+    const auto e = choice::estimate_relative(a, level(2 * h), 4, 2, 2, 2, nullptr, choice::zone_samples);
+    double mean = 0, pp = 0;
+    for (int t = 0; t < 2; ++t)
+      {
+        for (int i : {0, 2})
+          mean = std::max(mean, (0.5 + 0.1 * i) * 1e-6 / a[4 * t + i].ste);
+        pp = std::max(pp, 0.2e-6 / (a[4 * t + 2].ste - a[4 * t].ste));
+      }
+    EXPECT_NEAR(e[0], mean, 1e-9 * mean);
+    EXPECT_NEAR(e[1], pp, 1e-9 * pp);
+  }
   // A group that did not change has no estimate.
   const auto e = choice::estimate_relative(a, level(2 * h), 4, 1, 2, 2);
   EXPECT_TRUE(std::isnan(e[0]) && std::isnan(e[1]) && std::isnan(e[3]));
