@@ -55,7 +55,7 @@ namespace gearfem::choice
   double snap_finer(double h, double m)
   {
     for (const int n : contact_rungs())
-      if (m / n <= h * (1 + 1e-9))
+      if (m / n <= 1.1 * h * (1 + 1e-9))
         return m / n;
     return h;
   }

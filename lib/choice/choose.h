@@ -33,7 +33,7 @@ namespace gearfem::choice
   /// The error the measured ladder predicts at h_contact `h` [m] for module `m` [m] (relative;
   /// order 2 from the worst measured case; p-p 1 (100 %) coarser than m/20; 0 for the root stress).
   double predicted_error(Quantity q, double h, double m);
-  /// The coarsest rung at or below `h` (h itself below the finest rung).
+  /// The coarsest rung at or below 1.1 h (h itself below the finest rung).
   double snap_finer(double h, double m);
 
   /// The flank height bound of ModelChoice::flank_height.

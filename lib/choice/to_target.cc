@@ -198,6 +198,92 @@ namespace gearfem::choice
     return r;
   }
 
+  namespace
+  {
+    /// The candidate loop of run_to_target from `cand` on (its companion: the last level of
+    /// `o`), `spent` seconds already spent; sets the delivered level, `in`'s sizes and o.model.
+    void iterate(TargetOutcome &o, solve::GearContactInput &in, const FixedSettings &fixed,
+                 const TargetOptions &options, Sizes cand, std::array<double, n_quantities> carried,
+                 std::unique_ptr<contact::GearContactModel> model, double spent)
+    {
+      const auto t0 = Clock::now();
+      const AccuracyTarget &target = o.target;
+      const double m = in.pair->gear(1).parameters().rack.module;
+      const std::size_t sweep_positions = in.positions().size() * o.torques.size();
+      for (;;)
+        {
+          Level l = solve_level(in, cand, "candidate", o, options, model);
+          // h of the level before / h of this one, from the sizes built.
+          const double rho_c = o.levels.back().h_contact / l.h_contact;
+          const double rho_f = o.levels.back().h_fillet / l.h_fillet;
+          l.rho_contact = rho_c;
+          l.rho_fillet  = rho_f;
+          l.estimate  = estimate_relative(l.samples, o.levels.back().samples, o.positions.size(), rho_c, rho_f,
+                                          options.order, nullptr, zone_samples);
+          for (int q = 0; q < n_quantities; ++q)
+            if (!std::isfinite(l.estimate[q]))
+              l.estimate[q] = carried[q];
+          double worst_c = 0, worst_f = 0;
+          for (int q = 0; q < n_quantities; ++q)
+            if (target.tolerance[q] > 0)
+              {
+                const double ratio = std::isfinite(l.estimate[q]) ? l.estimate[q] / target.tolerance[q] : 2.0;
+                if (ratio > 1)
+                  (q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c) =
+                    std::max(q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c, ratio);
+              }
+          o.levels.push_back(l);
+          if (worst_c == 0 && worst_f == 0)
+            {
+              o.met = true;
+              break;
+            }
+          if (fixed.h_contact)
+            worst_c = 0;
+          if (fixed.h_fillet)
+            worst_f = 0;
+          if (worst_c == 0 && worst_f == 0)
+            {
+              o.stop_reason = "the sizes the failing quantities need are set in the input";
+              break;
+            }
+          if (o.levels.size() - 1 >= static_cast<std::size_t>(options.max_levels))
+            {
+              o.stop_reason = "Solve/Target: " + std::to_string(options.max_levels) + " candidate levels tried";
+              break;
+            }
+          // The contact group moves to the rung at or below h / factor.
+          const double h_now = cand.mesh[0].h_contact;
+          const double fc = worst_c > 0 ? h_now / snap_finer(h_now / refinement(worst_c, options.order), m) : 1;
+          const double ff = worst_f > 0 ? refinement(worst_f, options.order) : 1;
+          const double per_position = l.seconds_samples / std::max<std::size_t>(1, l.samples.size());
+          const double next = (l.seconds_setup + per_position * sweep_positions) * std::pow(std::max(fc, ff), 1.5);
+          if (options.cost_cap > 0 && spent + since(t0) + next > options.cost_cap)
+            {
+              std::ostringstream s;
+              s << std::setprecision(3) << "the next level (refined " << fc << " x on the contact, " << ff
+                << " x on the fillet) would take about " << next << " s, beyond Solve/Cost cap " << options.cost_cap
+                << " s";
+              o.stop_reason = s.str();
+              break;
+            }
+          if (options.out)
+            *options.out << "model choice: estimate above the target; refining h_contact by " << fc << ", h_fillet by "
+                         << ff << std::endl;
+          model.reset();
+          carried = l.estimate;
+          cand    = scaled(cand, 1 / fc, 1 / ff);
+        }
+      o.delivered          = o.levels.size() - 1;
+      o.levels.back().role = "delivered";
+      in.mesh[0]           = cand.mesh[0];
+      in.mesh[1]           = cand.mesh[1];
+      in.fe.degree         = cand.degree;
+      o.model              = std::move(model);
+      o.seconds            = spent + since(t0);
+    }
+  } // namespace
+
   TargetOutcome run_to_target(solve::GearContactInput &in, const AccuracyTarget &target, const FixedSettings &fixed,
                               const TargetOptions &options)
   {
@@ -244,94 +330,117 @@ namespace gearfem::choice
     o.levels.push_back(solve_level(in, companion, "companion", o, options, model));
     model.reset();
 
-    const std::size_t sweep_positions = in.positions().size() * o.torques.size();
     std::array<double, n_quantities> carried;
     carried.fill(nan);
-    for (int k = 0;; ++k)
-      {
-        Level l = solve_level(in, cand, "candidate", o, options, model);
-        // h of the level before / h of this one, from the sizes built.
-        const double rho_c = o.levels.back().h_contact / l.h_contact;
-        const double rho_f = o.levels.back().h_fillet / l.h_fillet;
-        l.rho_contact = rho_c;
-        l.rho_fillet  = rho_f;
-        l.estimate  = estimate_relative(l.samples, o.levels.back().samples, o.positions.size(), rho_c, rho_f,
-                                        options.order, nullptr, zone_samples);
-        for (int q = 0; q < n_quantities; ++q)
-          if (!std::isfinite(l.estimate[q]))
-            l.estimate[q] = carried[q];
-        double worst_c = 0, worst_f = 0;
-        for (int q = 0; q < n_quantities; ++q)
-          if (target.tolerance[q] > 0)
-            {
-              const double ratio = std::isfinite(l.estimate[q]) ? l.estimate[q] / target.tolerance[q] : 2.0;
-              if (ratio > 1)
-                (q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c) =
-                  std::max(q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c, ratio);
-            }
-        o.levels.push_back(l);
-        if (worst_c == 0 && worst_f == 0)
-          {
-            o.met = true;
-            break;
-          }
-        if (fixed.h_contact)
-          worst_c = 0;
-        if (fixed.h_fillet)
-          worst_f = 0;
-        if (worst_c == 0 && worst_f == 0)
-          {
-            o.stop_reason = "the sizes the failing quantities need are set in the input";
-            break;
-          }
-        if (k + 1 >= options.max_levels)
-          {
-            o.stop_reason = "Solve/Target: " + std::to_string(options.max_levels) + " candidate levels tried";
-            break;
-          }
-        // The contact group moves to the rung at or below h / factor.
-        const double h_now = cand.mesh[0].h_contact;
-        const double fc = worst_c > 0 ? h_now / snap_finer(h_now / refinement(worst_c, options.order), m) : 1;
-        const double ff = worst_f > 0 ? refinement(worst_f, options.order) : 1;
-        const double per_position = l.seconds_samples / std::max<std::size_t>(1, l.samples.size());
-        const double next = (l.seconds_setup + per_position * sweep_positions) * std::pow(std::max(fc, ff), 1.5);
-        if (options.cost_cap > 0 && since(t0) + next > options.cost_cap)
-          {
-            std::ostringstream s;
-            s << std::setprecision(3) << "the next level (refined " << fc << " x on the contact, " << ff
-              << " x on the fillet) would take about " << next << " s, beyond Solve/Cost cap " << options.cost_cap
-              << " s";
-            o.stop_reason = s.str();
-            break;
-          }
-        if (options.out)
-          *options.out << "model choice: estimate above the target; refining h_contact by " << fc << ", h_fillet by "
-                       << ff << std::endl;
-        model.reset();
-        carried = l.estimate;
-        cand    = scaled(cand, 1 / fc, 1 / ff);
-      }
-    o.delivered                = o.levels.size() - 1;
-    o.levels.back().role       = "delivered";
-    in.mesh[0]                 = cand.mesh[0];
-    in.mesh[1]                 = cand.mesh[1];
-    in.fe.degree               = cand.degree;
-    o.model                    = std::move(model);
-    o.seconds                  = since(t0);
+    iterate(o, in, fixed, options, cand, carried, std::move(model), since(t0));
     return o;
   }
 
-  void rescale_pp(TargetOutcome &o, const std::vector<double> &pp_sweep)
+  double ste_ripple(const std::vector<double> &roll, const std::vector<double> &ste)
   {
-    if (o.delivered == 0 || !o.target.asks(Quantity::pp_ste))
+    std::vector<double> r;
+    for (std::size_t i = 2; i + 2 < ste.size(); ++i)
+      {
+        // Least-squares quadratic through i-2, i-1, i+1, i+2 (x from roll[i]), its value at i.
+        double S[5] = {0, 0, 0, 0, 0}, T[3] = {0, 0, 0};
+        for (const std::size_t j : {i - 2, i - 1, i + 1, i + 2})
+          {
+            const double x = roll[j] - roll[i];
+            double xk      = 1;
+            for (int k = 0; k < 5; ++k, xk *= x)
+              {
+                S[k] += xk;
+                if (k < 3)
+                  T[k] += xk * ste[j];
+              }
+          }
+        // Normal equations [S0 S1 S2; S1 S2 S3; S2 S3 S4] c = T; c0 by Cramer's rule.
+        auto det = [](double a, double b, double c, double d, double e, double f, double g, double h, double k) {
+          return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+        };
+        const double D = det(S[0], S[1], S[2], S[1], S[2], S[3], S[2], S[3], S[4]);
+        if (D == 0)
+          continue;
+        const double c0 = det(T[0], S[1], S[2], T[1], S[2], S[3], T[2], S[3], S[4]) / D;
+        r.push_back(std::abs(ste[i] - c0));
+      }
+    if (r.size() < 4)
+      return 0;
+    auto q = r.begin() + static_cast<std::ptrdiff_t>(0.75 * (r.size() - 1));
+    std::nth_element(r.begin(), q, r.end());
+    return *q;
+  }
+
+  void rescale_pp(TargetOutcome &o, const std::vector<double> &pp_sweep, const std::vector<double> &ripple)
+  {
+    if (o.delivered == 0)
       return;
     Level &l = o.levels[o.delivered];
-    if (std::abs(l.rho_contact - 1) <= 0.2)
-      return; // carried from a level with the same contact sizes
-    const auto r = estimate_relative(l.samples, o.levels[o.delivered - 1].samples, o.positions.size(),
-                                     l.rho_contact, 1, o.order, &pp_sweep, zone_samples);
-    if (std::isfinite(r[1]))
-      l.estimate[1] = r[1];
+    const std::size_t n = o.positions.size();
+    const bool estimated = std::abs(l.rho_contact - 1) > 0.2;
+    double worst = 0;
+    for (std::size_t t = 0; t < pp_sweep.size() && pp_sweep[t] > 0; ++t)
+      {
+        double richardson = std::isfinite(l.estimate[1]) ? l.estimate[1] : 0; // carried: as it was
+        if (estimated && (t + 1) * n <= l.samples.size())
+          {
+            const std::vector<solve::EstimatedQuantities> a(l.samples.begin() + t * n, l.samples.begin() + (t + 1) * n),
+              b(o.levels[o.delivered - 1].samples.begin() + t * n, o.levels[o.delivered - 1].samples.begin() + (t + 1) * n);
+            const std::vector<double> pp = {pp_sweep[t]};
+            richardson = estimate_relative(a, b, n, l.rho_contact, 1, o.order, &pp, zone_samples)[1];
+          }
+        const double rip = t < ripple.size() ? 2 * ripple[t] / pp_sweep[t] : 0;
+        worst = std::max(worst, richardson + rip);
+      }
+    l.estimate[1] = worst;
+    o.met = true;
+    for (int q = 0; q < n_quantities; ++q)
+      if (o.target.tolerance[q] > 0 && !(l.estimate[q] <= o.target.tolerance[q]))
+        o.met = false;
+  }
+
+  bool refine_after_sweep(TargetOutcome &o, solve::GearContactInput &in, const FixedSettings &fixed,
+                          const TargetOptions &options, double sweep_seconds)
+  {
+    o.seconds += sweep_seconds;
+    const double tol = o.target[Quantity::pp_ste];
+    Level &d         = o.levels[o.delivered];
+    if (!(tol > 0) || d.estimate[1] <= tol)
+      return false;
+    if (fixed.h_contact)
+      {
+        o.stop_reason = "the swept p-p STE needs a finer Mesh/h_contact than the one set in the input";
+        return false;
+      }
+    if (o.levels.size() - 1 >= static_cast<std::size_t>(options.max_levels))
+      {
+        o.stop_reason = "Solve/Target: " + std::to_string(options.max_levels) + " candidate levels tried";
+        return false;
+      }
+    const double m  = in.pair->gear(1).parameters().rack.module;
+    const double h  = in.mesh[0].h_contact;
+    const double fc = h / snap_finer(h / refinement(d.estimate[1] / tol, o.order), m);
+    const double next = (d.seconds_setup + sweep_seconds) * std::pow(fc, 1.5);
+    if (options.cost_cap > 0 && o.seconds + next > options.cost_cap)
+      {
+        std::ostringstream s;
+        s << std::setprecision(3) << "the swept p-p STE asks for h_contact / " << fc << ", whose run would take about "
+          << next << " s, beyond Solve/Cost cap " << options.cost_cap << " s";
+        o.stop_reason = s.str();
+        return false;
+      }
+    if (options.out)
+      *options.out << "model choice: the swept p-p STE's estimate " << pc(d.estimate[1]) << " (mesh ripple included) "
+                   << "is above the target; refining h_contact by " << fc << " and sweeping again" << std::endl;
+    d.role = "swept";
+    Sizes cand;
+    cand.mesh[0] = in.mesh[0];
+    cand.mesh[1] = in.mesh[1];
+    cand.degree  = in.fe.degree;
+    o.model.reset();
+    o.met = false;
+    iterate(o, in, fixed, options, scaled(cand, 1 / fc, 1), d.estimate, nullptr, o.seconds);
+    return true;
   }
 
   std::string model_choice_summary(const TargetOutcome &o)
@@ -361,8 +470,9 @@ namespace gearfem::choice
           s << " " << (o.target.tolerance[q] > 0 ? pc(l.estimate[q]) : "-") << " |";
         s << "\n";
       }
-    s << "\nAchieved (estimated relative error of the delivered run, Richardson order " << o.order
-      << ", samples (A+B)/2, B, (B+D)/2, D at every torque) against the target:";
+    s << "\nAchieved (estimated relative error of the delivered run: Richardson order " << o.order
+      << " against the level before it at (A+B)/2 and (B+D)/2 for the STE, also at B and D for the stresses, "
+         "every torque; the p-p STE with twice the swept mesh ripple) against the target:";
     for (int q = 0; q < n_quantities; ++q)
       if (o.target.tolerance[q] > 0)
         s << " " << AccuracyTarget::names()[q] << " " << pc(d.estimate[q]) << " / " << pc(o.target.tolerance[q])

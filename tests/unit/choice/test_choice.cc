@@ -88,6 +88,7 @@ TEST(ChoiceRules, FollowTheLadderAndCatchTheFlankHeight)
   EXPECT_NEAR(choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 1"), {}).mesh[0].h_contact,
               m / 15, 1e-12);
   EXPECT_NEAR(choice::snap_finer(m / 25, m), m / 30, 1e-12);
+  EXPECT_NEAR(choice::snap_finer(m / 47, m), m / 45, 1e-12); // within 10 %
   EXPECT_NEAR(c.mesh[0].h_fillet, m / 12, 1e-12);
   EXPECT_EQ(c.degree, 2u);
   // Loose STE only: Q1, the coarsest rung m/8 (predicted 3.0 %), coarse fillet.
@@ -223,4 +224,23 @@ end
   const auto q = solve::solve_samples(*o.model, {o.positions[0]}, {200.0}, options.post);
   EXPECT_NEAR(q[0].ste, d.samples[0].ste, 1e-7 * d.samples[0].ste);
   EXPECT_NE(choice::model_choice_json(o).find("\"met\": true"), std::string::npos);
+}
+
+TEST(ChoiceRipple, ZeroOnACubicAndEightThirdsOfAnAlternatingRipple)
+{
+  // The leave-one-out quadratic through two neighbours on each side reproduces a cubic exactly
+  // (its odd part is fitted by the linear term); an alternating +-d on top gives |r| = 8 d / 3
+  // at every interior position (closed form of the symmetric least-squares fit).
+  std::vector<double> x, smooth, rippled;
+  const double d = 0.01e-6;
+  for (int i = 0; i < 40; ++i)
+    {
+      x.push_back(-6.3 + 0.18 * i);
+      const double s = 4e-6 + 0.02e-6 * x.back() - 0.003e-6 * x.back() * x.back() + 1e-10 * std::pow(x.back(), 3);
+      smooth.push_back(s);
+      rippled.push_back(s + (i % 2 ? d : -d));
+    }
+  EXPECT_NEAR(choice::ste_ripple(x, smooth), 0, 1e-18);
+  EXPECT_NEAR(choice::ste_ripple(x, rippled), 8 * d / 3, 1e-6 * d);
+  EXPECT_EQ(choice::ste_ripple({0, 1, 2}, {1, 2, 3}), 0);
 }
