@@ -73,8 +73,9 @@ namespace gearfem::choice
 
     /// Build `sizes` on `in`'s pair and solve the samples: one Level.
     /// Build `sizes` on `in`'s pair and solve the samples: one Level. Where gmsh's first quad
-    /// recombination fails, the fillet group is made 15 % finer and meshed again, now with
-    /// gmsh's slow retries and subdivision fallback allowed should it fail again: a slightly finer fillet keeps the
+    /// recombination fails (or gmsh returns a mesh with an inverted cell), the fillets and the
+    /// other teeth are made 15 % finer and meshed again, now with gmsh's slow retries and subdivision fallback
+    /// allowed, at most twice: a slightly finer fillet keeps the
     /// accuracy asked for and avoids the retries and the subdivision fallback (FZG type C: 18-33 s
     /// of set-up instead of 3.5 s). `sizes` returns the sizes built.
     Level solve_level(const solve::GearContactInput &in, Sizes &sizes, const std::string &role,
@@ -101,14 +102,26 @@ namespace gearfem::choice
                                                                   in.unmodified_pair.get());
               break;
             }
-          catch (const mesh::RecombinationFailed &)
+          catch (const InputError &e)
             {
-              for (auto &g : sizes.mesh)
-                g.h_fillet *= 0.85;
+              // gmsh's first recombination failed (fallbacks off), or a mesh it produced is
+              // unusable (an inverted cell: rand2 of validation/model_choice at m/45): the sizes
+              // are ours to nudge. Anything else, or a third failure, is the input's.
+              const bool recombination = dynamic_cast<const mesh::RecombinationFailed *>(&e) != nullptr;
+              if (e.parameter() != "Mesh" || attempt >= 2)
+                throw;
+              for (int i = 0; i < 2; ++i)
+                {
+                  auto &g = sizes.mesh[i];
+                  const double h_tooth =
+                    g.h_tooth > 0 ? g.h_tooth : std::min(g.h_body, 0.4 * in.pair->gear(i + 1).parameters().rack.module);
+                  g.h_fillet *= 0.85;
+                  g.h_tooth = 0.85 * h_tooth; // the other teeth, where an inverted cell also appears
+                }
               ++l.remeshed;
               if (options.out)
-                *options.out << "model choice: quad recombination failed; h_fillet " << mm(sizes.mesh[0].h_fillet)
-                             << " mm" << std::endl;
+                *options.out << "model choice: " << (recombination ? "quad recombination failed" : "gmsh mesh refused")
+                             << "; h_fillet " << mm(sizes.mesh[0].h_fillet) << " mm" << std::endl;
             }
         }
       for (auto &g : sizes.mesh)
