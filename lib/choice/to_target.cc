@@ -379,7 +379,7 @@ namespace gearfem::choice
       }
     if (r.size() < 4)
       return 0;
-    auto q = r.begin() + static_cast<std::ptrdiff_t>(0.75 * (r.size() - 1));
+    auto q = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
     std::nth_element(r.begin(), q, r.end());
     return *q;
   }

@@ -101,10 +101,12 @@ namespace gearfem::choice
 
   /// The mesh ripple of a swept STE curve (`ste` over `roll`, one torque, in order): at each
   /// interior position, |STE - the least-squares quadratic through the two neighbours on each
-  /// side|; the 75th percentile of these. A smooth curve gives its curvature term only; the
-  /// node-to-segment ripple of a contact mesh (the STE of the Parker pair at m/30 and 100 N m
-  /// moves by +-0.01 um from position to position) adds to it, and a p-p taken over the
-  /// positions picks it up twice (the p-p error 1.1 % there, against 0.03 % at 200 N m).
+  /// side|; the median of these. A smooth curve gives its curvature term only (the converged
+  /// references of validation/model_choice: 0.04-0.11 % of the p-p; the 75th percentile,
+  /// which the transitions reach, 0.12-0.38 %); the node-to-segment ripple of a contact mesh
+  /// (the STE of the Parker pair at m/30 and 100 N m moves by +-0.01 um from position to
+  /// position) adds to it, and a p-p taken over the positions picks it up at both ends (the p-p
+  /// error 1.1 % there; twice the median 0.72 %).
   double ste_ripple(const std::vector<double> &roll, const std::vector<double> &ste);
 
   /// With the sweep done: the p-p estimate of the delivered level per torque, relative to the
