@@ -71,23 +71,6 @@ namespace gearfem::batch
         prm.leave_subsection();
     }
 
-    /// ParameterHandler's private name mangling (every character but [a-zA-Z0-9] as _XX),
-    /// for a JSON tree that keeps mangled names.
-    std::string mangle(const std::string &s)
-    {
-      std::string out;
-      for (const char c : s)
-        if (std::isalnum(static_cast<unsigned char>(c)))
-          out += c;
-        else
-          {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "_%02x", static_cast<unsigned char>(c));
-            out += buf;
-          }
-      return out;
-    }
-
     void declare_case(dealii::ParameterHandler &prm)
     {
       solve::declare_gear_contact_input(prm);
@@ -263,14 +246,14 @@ namespace gearfem::batch
       {
         auto it = node->find(name);
         if (it == node->not_found())
-          it = node->find(mangle(name));
+          it = node->find(params::mangled_name(name));
         if (it == node->not_found())
           return "";
         node = &it->second;
       }
     auto it = node->find(entry);
     if (it == node->not_found())
-      it = node->find(mangle(entry));
+      it = node->find(params::mangled_name(entry));
     if (it == node->not_found())
       return "";
     const std::string doc = it->second.get<std::string>("documentation", "");

@@ -1,5 +1,8 @@
 #include "params/checked.h"
 
+#include <cctype>
+#include <cstdio>
+
 #include "base/errors.h"
 #include "base/number.h"
 
@@ -224,5 +227,20 @@ namespace gearfem::params
   {
     prm.declare_entry(entry, default_value, dealii::Patterns::Anything(),
                       what + " Comma-separated. Units: N m. Allowed: > 0 each.");
+  }
+
+  std::string mangled_name(const std::string &name)
+  {
+    std::string out;
+    for (const char c : name)
+      if (std::isalnum(static_cast<unsigned char>(c)))
+        out += c;
+      else
+        {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "_%02x", static_cast<unsigned char>(c));
+          out += buf;
+        }
+    return out;
   }
 } // namespace gearfem::params

@@ -54,6 +54,10 @@ namespace gearfem::params
   /// the pattern. Call after parse_input().
   void check_entries(const dealii::ParameterHandler &prm);
 
+  /// ParameterHandler's private name mangling: every character but [a-zA-Z0-9] as _XX (two
+  /// hexadecimal digits), the form of the names in its tree and in get_entries_wrongly_not_set().
+  std::string mangled_name(const std::string &name);
+
   /// The message of a deal.II exception (ParameterHandler's parse errors), trimmed.
   std::string exception_text(const dealii::ExceptionBase &e);
 } // namespace gearfem::params

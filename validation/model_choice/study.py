@@ -19,6 +19,7 @@ run.json written) and the same case.prm is not run again. --draw-only: draw and 
 random designs, run nothing else.
 """
 import argparse
+import importlib.util
 import json
 import math
 import os
@@ -39,6 +40,10 @@ SVE = os.path.join(ROOT, "validation", "speed_vs_error")
 sys.path.append(SVE)
 from analyse import read_csv, ste_metrics  # noqa: E402  (speed_vs_error's metrics)
 from pairs import PAIRS as SVE_PAIRS  # noqa: E402  (speed_vs_error's pairs)
+_spec = importlib.util.spec_from_file_location("sve_study", os.path.join(SVE, "study.py"))
+_sve_study = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_sve_study)
+merge = _sve_study.merge  # {section: {entry: value}} overrides, speed_vs_error's
 
 GEARFEM = os.path.join(os.environ.get("GEARFEM_BUILD_DIR", os.path.join(ROOT, "build")), "app", "gearfem")
 OUT = os.path.join(HERE, "results")
@@ -212,13 +217,6 @@ def prm_text(sections):
         lines += [f"  set {k} = {v}" for k, v in entries.items()]
         lines.append("end")
     return "\n".join(lines) + "\n"
-
-
-def merge(a, b):
-    out = {k: dict(v) for k, v in a.items()}
-    for k, v in b.items():
-        out.setdefault(k, {}).update(v)
-    return out
 
 
 def case_text(pair, overrides):
