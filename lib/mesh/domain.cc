@@ -265,17 +265,59 @@ namespace gearfem::mesh
       gmsh::model::setPhysicalName(2, 1, "body");
     }
 
+    /// Arc length of a piece (polyline of 256 chords).
+    double piece_length(const BoundaryPiece &piece)
+    {
+      double length = 0;
+      Vec2 prev     = piece.start();
+      for (int j = 1; j <= 256; ++j)
+        {
+          const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / 256);
+          length += (p - prev).norm();
+          prev = p;
+        }
+      return length;
+    }
+
+    /// A piece shorter than this fraction of its size is one short edge between longer ones
+    /// (the root lands of coarse teeth); Blossom then can leave triangle pairs at its ends.
+    constexpr double short_piece_ratio = 0.5;
+
+    /// Whether a piece of the domain is shorter than short_piece_ratio times its size.
+    bool has_short_piece(const Domain &domain)
+    {
+      for (const auto &loop : domain.loops)
+        for (const auto &piece : loop.pieces)
+          {
+            const double h = piece.size > 0 ? piece.size : domain.h_body;
+            if (piece_length(piece) < short_piece_ratio * h)
+              return true;
+          }
+      return false;
+    }
+
     /// Phase 3: size field. For each distinct fine size, distance to its pieces and a
     /// threshold growing linearly (h + (g - 1) d, the continuous form of a geometric
     /// progression); the minimum with h_body is the background mesh.
-    void add_size_field(const Domain &domain, const GmshModel &m, const MeshData &out)
+    void add_size_field(const Domain &domain, const GmshModel &m, const MeshData &out, bool grade_short)
     {
       std::map<double, std::vector<double>> by_size;
+      std::map<double, double> longest; // per size: the longest piece [m] (graded mesh only)
       for (const auto &[tag, piece] : m.curve_to_piece)
         {
-          const double h = out.pieces[piece].size;
+          double h = out.pieces[piece].size > 0 ? out.pieces[piece].size : domain.h_body;
+          const double length = grade_short ? piece_length(out.pieces[piece]) : 0.0;
+          if (grade_short)
+            {
+              // Snapped down to a sqrt(2) ladder: one distance field per rung, not per piece.
+              if (length < short_piece_ratio * h)
+                h *= std::pow(2.0, 0.5 * std::floor(2.0 * std::log2(length / h)));
+            }
           if (h > 0 && h < domain.h_body)
-            by_size[h].push_back(tag);
+            {
+              by_size[h].push_back(tag);
+              longest[h] = std::max(longest[h], length);
+            }
         }
       namespace field = gmsh::model::mesh::field;
       std::vector<double> thresholds;
@@ -283,7 +325,10 @@ namespace gearfem::mesh
         {
           const int dist = field::add("Distance");
           field::setNumbers(dist, "CurvesList", tags);
-          field::setNumber(dist, "NumPointsPerCurve", 400);
+          // 400 samples per curve; the graded mesh (after a failed first one) takes four per
+          // element of the group's longest curve (distance within h/8), a smaller search tree.
+          const double n_samples = grade_short ? std::clamp(std::ceil(4.0 * longest[h] / h), 16.0, 400.0) : 400.0;
+          field::setNumber(dist, "NumPointsPerCurve", n_samples);
           const int thr = field::add("Threshold");
           field::setNumber(thr, "InField", dist);
           field::setNumber(thr, "SizeMin", h);
@@ -316,15 +361,7 @@ namespace gearfem::mesh
             {
               const auto &piece = out.pieces[first + i];
               const double h = piece.size > 0 ? std::min(piece.size, domain.h_body) : domain.h_body;
-              double length  = 0;
-              const int ns   = 256;
-              Vec2 prev      = piece.start();
-              for (int j = 1; j <= ns; ++j)
-                {
-                  const Vec2 p = piece.curve.point(piece.t0 + (piece.t1 - piece.t0) * j / ns);
-                  length += (p - prev).norm();
-                  prev = p;
-                }
+              const double length = piece_length(piece);
               lengths[i] = length / h;
               n_edges[i] = std::max(1, int(std::lround(length / h)));
               total += n_edges[i];
@@ -337,9 +374,22 @@ namespace gearfem::mesh
         }
     }
 
-    /// Phase 5: generate the all-quad mesh, with the fallbacks below; sets out.subdivided
-    /// when only the subdivision fallback gave quads.
-    void generate_all_quad(const MeshingOptions &options, const GmshModel &m, MeshData &out)
+    /// Number of elements of the surface that are not quadrilaterals.
+    std::size_t n_non_quads(const GmshModel &m)
+    {
+      std::vector<int> t;
+      std::vector<std::vector<std::size_t>> et, en;
+      gmsh::model::mesh::getElements(t, et, en, 2, m.surface);
+      std::size_t n = 0;
+      for (std::size_t k = 0; k < t.size(); ++k)
+        if (t[k] != 3)
+          n += et[k].size();
+      return n;
+    }
+
+    /// Phase 5: generate the mesh (Blossom recombination); the number of elements left that
+    /// are not quadrilaterals (0 for a good mesh: the boundary loops are even).
+    std::size_t generate_recombined(const MeshingOptions &options, const GmshModel &m)
     {
       gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps);
       gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -348,42 +398,32 @@ namespace gearfem::mesh
       gmsh::option::setNumber("Mesh.Algorithm", options.algorithm);
       gmsh::option::setNumber("Mesh.RecombineAll", 1);
       gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1); // Blossom
-
       gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
       gmsh::model::mesh::generate(2);
-      // Blossom recombination of a mesh with even boundary loops gives quads only; should
-      // a triangle remain, remesh at twice the size and split every element into quads
-      // (Mesh.SubdivisionAlgorithm = 1), which guarantees an all-quad mesh (lower quality).
-      auto n_non_quads = [&]() {
-        std::vector<int> t;
-        std::vector<std::vector<std::size_t>> et, en;
-        gmsh::model::mesh::getElements(t, et, en, 2, m.surface);
-        std::size_t n = 0;
-        for (std::size_t k = 0; k < t.size(); ++k)
-          if (t[k] != 3)
-            n += et[k].size();
-        return n;
-      };
-      if (!options.fallbacks && n_non_quads() > 0)
-        throw RecombinationFailed("Mesh", "gmsh Blossom recombination left " + std::to_string(n_non_quads()) +
-                                            " non-quadrilateral elements",
-                                  "an all-quad mesh at the first attempt", "fallbacks off: try other sizes");
-      // Blossom occasionally fails on a valid triangulation: retry Frontal-Delaunay with a
-      // perturbed triangulation (random factor), then MeshAdapt, before subdividing.
-      for (int attempt = 1; attempt <= 3 && n_non_quads() > 0; ++attempt)
+      return n_non_quads(m);
+    }
+
+    /// Phase 5, last resort: Blossom occasionally fails on a valid triangulation. Retry
+    /// Frontal-Delaunay with a perturbed triangulation (random factor), then MeshAdapt; should
+    /// a triangle remain, remesh at twice the size and split every element into quads
+    /// (Mesh.SubdivisionAlgorithm = 1), which guarantees an all-quad mesh (lower quality) and
+    /// sets out.subdivided.
+    void recombination_fallbacks(const MeshingOptions &options, const GmshModel &m, MeshData &out)
+    {
+      for (int attempt = 1; attempt <= 3 && n_non_quads(m) > 0; ++attempt)
         {
           gmsh::model::mesh::clear();
           gmsh::option::setNumber("Mesh.RandomFactor", 1e-9 * (1 + 10 * attempt));
           gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps + attempt);
           gmsh::model::mesh::generate(2);
         }
-      if (n_non_quads() > 0 && options.algorithm != 1)
+      if (n_non_quads(m) > 0 && options.algorithm != 1)
         {
           gmsh::model::mesh::clear();
           gmsh::option::setNumber("Mesh.Algorithm", 1);
           gmsh::model::mesh::generate(2);
         }
-      if (n_non_quads() > 0)
+      if (n_non_quads(m) > 0)
         {
           gmsh::model::mesh::clear();
           gmsh::option::setNumber("Mesh.MeshSizeFactor", 2.0);
@@ -503,12 +543,37 @@ namespace gearfem::mesh
     GmshSession session;
     try
       {
-        gmsh::model::add(options.model_name);
-        const GmshModel model = build_geometry(domain, options, out);
-        add_physical_groups(model, out);
-        add_size_field(domain, model, out);
-        set_curve_node_counts(domain, model, out);
-        generate_all_quad(options, model, out);
+        // Phases 1-4 with the pieces' own sizes, or with short pieces graded (their length
+        // as their size) when that first mesh was not all quads.
+        const auto build = [&](bool grade_short) {
+          if (grade_short)
+            gmsh::model::remove();
+          out.pieces.clear();
+          gmsh::model::add(options.model_name);
+          const GmshModel m = build_geometry(domain, options, out);
+          add_physical_groups(m, out);
+          add_size_field(domain, m, out, grade_short);
+          set_curve_node_counts(domain, m, out);
+          return m;
+        };
+        GmshModel model  = build(false);
+        std::size_t left = generate_recombined(options, model);
+        if (left > 0 && has_short_piece(domain))
+          {
+            // Blossom leaves triangle pairs where a piece is one edge much shorter than its
+            // neighbours (the root lands between coarse teeth of large gears: 8 of the 69
+            // roots of the 23/69 m 4 gear at h_contact m/30); grading the size field to those
+            // pieces meshes them at once, where the retries below failed alike and subdivided.
+            model = build(true);
+            left  = generate_recombined(options, model);
+          }
+        if (left > 0 && !options.fallbacks)
+          throw RecombinationFailed("Mesh",
+                                    "gmsh Blossom recombination left " + std::to_string(left) +
+                                      " non-quadrilateral elements",
+                                    "an all-quad mesh at the first attempt", "fallbacks off: try other sizes");
+        if (left > 0)
+          recombination_fallbacks(options, model, out);
         extract_mesh(model, out, tags);
       }
     catch (const std::string &e)

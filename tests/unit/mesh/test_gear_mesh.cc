@@ -141,6 +141,42 @@ TEST(GearMesh, FineContactCoarseCoastRecombines)
             << std::endl;
 }
 
+// The root lands between the coarse teeth of a full gear are one edge much shorter than the
+// fillets beside them (FZG type C gear, z 24, m 4.5, x 0.1715: 0.64 mm against h 1.8 mm).
+// gmsh's Blossom recombination left triangle pairs there, its retries failed alike, and the
+// mesher fell back to subdivision (20 s, angles down to 11 deg). The mesh graded to those
+// pieces recombines. Reference: the quality of the gears that recombine at once (angles
+// >= 29 deg above), and the root circle r_f = m (z/2 - 1.25 + x) for the root-land vertices.
+TEST(GearMesh, ShortRootLandsRecombine)
+{
+  const double m_n = 4.5, x = 0.1715;
+  const int z      = 24;
+  const auto tooth = make_tooth(z, x, m_n);
+  mesh::GearMeshParameters p;
+  p.h_contact  = 0.3e-3;
+  const auto m = mesh::mesh_gear(tooth, p);
+  const auto q = mesh::quality(m);
+  EXPECT_FALSE(m.subdivided);
+  EXPECT_EQ(q.n_inverted, 0u);
+  EXPECT_GT(q.min_angle, 30.0);
+  EXPECT_LT(q.max_angle, 150.0);
+  const double r_f = m_n * (z / 2.0 - 1.25 + x) * units::mm;
+  int on_root      = 0;
+  for (const auto &e : m.boundary_edges)
+    {
+      const unsigned code = mesh::boundary::code_of(e.boundary_id);
+      if (code == mesh::boundary::root_drive || code == mesh::boundary::root_coast)
+        for (unsigned v : {e.v0, e.v1})
+          {
+            EXPECT_NEAR(m.vertices[v].norm(), r_f, 1e-9);
+            ++on_root;
+          }
+    }
+  EXPECT_GE(on_root, 4 * z);
+  std::cout << "FZG C gear 2 at h_contact 0.3 mm: " << m.cells.size() << " cells, angles " << q.min_angle << "-"
+            << q.max_angle << " deg, meshed in " << m.mesh_seconds << " s" << std::endl;
+}
+
 // Tooth placement offsets (a pitch deviation built into the geometry). Reference: tooth k's
 // outline is tooth 0's turned by 2 pi k / z + delta_k (counter-clockwise for delta_k > 0), and
 // neighbouring teeth meet on the root circle at the mean of their offsets.
