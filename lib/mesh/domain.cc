@@ -307,12 +307,9 @@ namespace gearfem::mesh
         {
           double h = out.pieces[piece].size > 0 ? out.pieces[piece].size : domain.h_body;
           const double length = grade_short ? piece_length(out.pieces[piece]) : 0.0;
-          if (grade_short)
-            {
-              // Snapped down to a sqrt(2) ladder: one distance field per rung, not per piece.
-              if (length < short_piece_ratio * h)
-                h *= std::pow(2.0, 0.5 * std::floor(2.0 * std::log2(length / h)));
-            }
+          // Snapped down to a sqrt(2) ladder: one distance field per rung, not per piece.
+          if (grade_short && length < short_piece_ratio * h)
+            h *= std::pow(2.0, 0.5 * std::floor(2.0 * std::log2(length / h)));
           if (h > 0 && h < domain.h_body)
             {
               by_size[h].push_back(tag);

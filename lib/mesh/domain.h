@@ -112,8 +112,9 @@ namespace gearfem::mesh
     int smoothing_steps   = 5;      ///< gmsh Mesh.Smoothing (Laplacian smoothing passes)
     std::filesystem::path msh_file; ///< if not empty, write the mesh here (MSH 4.1, atomic)
     std::string model_name = "gearfem";
-    /// When Blossom recombination leaves triangles: retry, then subdivide (true), or throw
-    /// RecombinationFailed at once (false: a caller that can try other sizes, choice/).
+    /// When Blossom recombination leaves triangles, also on the mesh graded to short pieces
+    /// (mesh_domain): retry, then subdivide (true), or throw RecombinationFailed (false: a
+    /// caller that can try other sizes, choice/).
     bool fallbacks = true;
   };
 
