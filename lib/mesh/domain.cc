@@ -537,61 +537,76 @@ namespace gearfem::mesh
     const auto t_start = std::chrono::steady_clock::now();
     MeshData out;
     std::vector<std::size_t> tags;
-    GmshSession session;
-    try
-      {
-        // Phases 1-4 with the pieces' own sizes, or with short pieces graded (their length
-        // as their size) when that first mesh was not all quads.
-        const auto build = [&](bool grade_short) {
-          if (grade_short)
-            gmsh::model::remove();
-          out.pieces.clear();
-          gmsh::model::add(options.model_name);
-          const GmshModel m = build_geometry(domain, options, out);
-          add_physical_groups(m, out);
-          add_size_field(domain, m, out, grade_short);
-          set_curve_node_counts(domain, m, out);
-          return m;
-        };
-        GmshModel model  = build(false);
-        std::size_t left = generate_recombined(options, model);
-        if (left > 0 && has_short_piece(domain))
-          {
-            // Blossom leaves triangle pairs where a piece is one edge much shorter than its
-            // neighbours (the root lands between coarse teeth of large gears: 8 of the 69
-            // roots of the 23/69 m 4 gear at h_contact m/30); grading the size field to those
-            // pieces meshes them at once, where the retries below failed alike and subdivided.
-            model = build(true);
-            left  = generate_recombined(options, model);
-          }
-        if (left > 0 && !options.fallbacks)
-          throw RecombinationFailed("Mesh",
-                                    "gmsh Blossom recombination left " + std::to_string(left) +
-                                      " non-quadrilateral elements",
-                                    "an all-quad mesh at the first attempt", "fallbacks off: try other sizes");
-        if (left > 0)
-          recombination_fallbacks(options, model, out);
-        extract_mesh(model, out, tags);
-      }
-    catch (const std::string &e)
-      {
-        gmsh_failure("error: " + e, session.last_errors());
-      }
-    catch (const std::out_of_range &)
-      {
-        gmsh_failure("returned inconsistent node tags", "");
-      }
-    snap_boundary_vertices(out);
-    untangle_inverted_cells(out); // phase 8
-    if (!options.msh_file.empty())
+    // Phases 1-8, in a gmsh session of their own. `grade`: when the first mesh is not all
+    // quads and the outline has short pieces, mesh again with the size field graded to them
+    // (their length as their size) before the retries of phase 5. Returns whether the
+    // graded mesh was taken.
+    const auto mesh_once = [&](bool grade) {
+      GmshSession session;
+      bool graded = false;
+      out = MeshData();
+      tags.clear();
       try
         {
-          write_msh(out, tags, options.msh_file);
+          const auto build = [&](bool grade_short) {
+            if (grade_short)
+              gmsh::model::remove();
+            out.pieces.clear();
+            gmsh::model::add(options.model_name);
+            const GmshModel m = build_geometry(domain, options, out);
+            add_physical_groups(m, out);
+            add_size_field(domain, m, out, grade_short);
+            set_curve_node_counts(domain, m, out);
+            return m;
+          };
+          GmshModel model  = build(false);
+          std::size_t left = generate_recombined(options, model);
+          if (grade && left > 0 && has_short_piece(domain))
+            {
+              // Blossom leaves triangle pairs where a piece is one edge much shorter than its
+              // neighbours (the root lands between coarse teeth of large gears: 8 of the 69
+              // roots of the 23/69 m 4 gear at h_contact m/30); grading the size field to
+              // those pieces meshes them at once, where the retries below failed alike and
+              // subdivided.
+              model  = build(true);
+              left   = generate_recombined(options, model);
+              graded = true;
+            }
+          if (left > 0 && !options.fallbacks)
+            throw RecombinationFailed("Mesh",
+                                      "gmsh Blossom recombination left " + std::to_string(left) +
+                                        " non-quadrilateral elements",
+                                      "an all-quad mesh at the first attempt", "fallbacks off: try other sizes");
+          if (left > 0)
+            recombination_fallbacks(options, model, out);
+          extract_mesh(model, out, tags);
         }
       catch (const std::string &e)
         {
-          gmsh_failure("error writing " + options.msh_file.string() + ": " + e, session.last_errors());
+          gmsh_failure("error: " + e, session.last_errors());
         }
+      catch (const std::out_of_range &)
+        {
+          gmsh_failure("returned inconsistent node tags", "");
+        }
+      snap_boundary_vertices(out);
+      untangle_inverted_cells(out); // phase 8
+      if (!options.msh_file.empty())
+        try
+          {
+            write_msh(out, tags, options.msh_file);
+          }
+        catch (const std::string &e)
+          {
+            gmsh_failure("error writing " + options.msh_file.string() + ": " + e, session.last_errors());
+          }
+      return graded;
+    };
+    // A graded mesh that snapping to the exact outline leaves with an inverted cell (the
+    // Parker gear at h_contact = h_fillet = 0.05 mm, a fillet cell) is not used: the mesh is
+    // made again without the graded pass, through the retries of phase 5.
+    if (mesh_once(true) && quality(out).n_inverted > 0 && options.fallbacks)
+      mesh_once(false);
     out.mesh_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 
