@@ -25,7 +25,7 @@ namespace gearfem::fem
     declare_fe_parameters(prm);
     if (!std::filesystem::is_regular_file(prm_file))
       throw InputError("input file", prm_file.string(), "an existing readable file");
-    prm.parse_input(prm_file.string(), "", true, true); // ignore other commands' sections
+    prm.parse_input(prm_file.string(), "", true, false); // ignore other commands' sections
     const auto gi = geometry::parse_geometry_parameters(prm);
     const auto pm = geometry::parse_material_parameters(prm);
     FeOptions fe  = parse_fe_parameters(prm);

@@ -93,7 +93,7 @@ namespace gearfem::solve
     dealii::ParameterHandler prm;
     solve::declare_gear_contact_input(prm);
     post::declare_post_parameters(prm);
-    prm.parse_input(prm_file.string(), "", true, true); // other commands' sections are ignored
+    prm.parse_input(prm_file.string(), "", true, false); // other commands' sections are ignored
     solve::GearContactInput in = solve::parse_gear_contact_input(prm);
     in.require_external("gearfem bench solve");
     PostOptions post_options = post::parse_post_parameters(prm);
