@@ -41,7 +41,7 @@ namespace gearfem::contact
     if (m == 0)
       throw SolverError("condense: no candidate slave node at the solution");
     double t_flex = 0;
-    const Linearisation lin = linearise(scene, sr, q, lambda_node, t_flex);
+    const Linearisation lin = linearise(scene, sr, q, lambda_node, t_flex, true);
 
     CondensedPosition out;
     out.q_build    = q;

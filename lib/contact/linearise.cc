@@ -38,7 +38,7 @@ namespace gearfem::contact
 
   TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene, const SearchResult &sr, double q,
                                                           const std::vector<double> &lambda_node,
-                                                          double &t_compliance)
+                                                          double &t_compliance, bool full)
   {
     const auto &cand = sr.cand;
     const int m      = int(cand.size());
@@ -183,46 +183,112 @@ namespace gearfem::contact
           for (const auto &[i, v] : L.B[b][k])
             used[b].push_back(i);
       }
-    delassus(L, used, t_compliance);
+    prepare_delassus(L, used);
+    std::vector<int> ks;
+    for (int k = 0; k < m; ++k)
+      if (full || L.lambda0[k] > 0)
+        ks.push_back(k);
+    const double t0 = t_compliance;
+    fill_delassus(L, ks, t_compliance);
+    L.t_flex = t_compliance - t0;
     return L;
   }
 
-  void TwoBodyContact::delassus(Linearisation &L, std::vector<int> used[2], double &t_compliance)
+  void TwoBodyContact::prepare_delassus(Linearisation &L, std::vector<int> used[2]) const
   {
     const int m = int(L.a.size());
     for (int b = 0; b < 2; ++b)
       {
         std::sort(used[b].begin(), used[b].end());
         used[b].erase(std::unique(used[b].begin(), used[b].end()), used[b].end());
+        L.support[b] = used[b];
+        std::vector<int> pos(cache_[b].dofs.size(), -1);
+        for (std::size_t r = 0; r < used[b].size(); ++r)
+          pos[used[b][r]] = int(r);
+        const auto local = [&](const std::vector<std::vector<std::pair<int, double>>> &rows) {
+          std::vector<std::vector<std::pair<int, double>>> out(rows.size());
+          for (std::size_t k = 0; k < rows.size(); ++k)
+            for (const auto &[i, v] : rows[k])
+              out[k].emplace_back(pos[i], v);
+          return out;
+        };
+        L.Bs[b] = local(L.B[b]);
+        L.Fs[b] = L.F[b].empty() ? std::vector<std::vector<std::pair<int, double>>>() : local(L.F[b]);
       }
-    const double t0 = t_compliance;
-    for (int b = 1; b <= 2; ++b)
-      ensure_columns(b, used[b - 1], t_compliance);
-    L.t_flex = t_compliance - t0;
-
-    // W = sum_b B_b^T C_b B_b. B has 2 (slave) or 2 (p + 1) (master face) entries per
-    // column, so W is built from the columns C_b B_b (contiguous columns of the cache):
-    // O(u m) instead of the O(u^2 m) of a dense product. Symmetrised (C is symmetric to
-    // round-off).
-    // With friction, W_f = B^T C B_f: column k from the force directions of candidate k,
-    // not symmetrised.
     L.W = Eigen::MatrixXd::Zero(m, m);
-    Eigen::VectorXd t;
+    L.filled.assign(m, 0);
+  }
+
+  void TwoBodyContact::fill_delassus(Linearisation &L, const std::vector<int> &ks, double &t_compliance)
+  {
+    const int m = int(L.a.size());
+    std::vector<int> todo;
+    for (const int k : ks)
+      if (!L.filled[k])
+        todo.push_back(k);
+    if (todo.empty())
+      return;
     for (int b = 0; b < 2; ++b)
-      for (int k = 0; k < m; ++k)
-        {
-          const auto &col = L.forces(b)[k];
-          if (col.empty())
-            continue;
-          t.setZero(cache_[b].flex->C.rows());
-          for (const auto &[i, v] : col)
-            t.noalias() += v * cache_[b].flex->C.col(i);
+      {
+        std::vector<int> idx;
+        for (const int k : todo)
+          for (const auto &[i, v] : L.forces(b)[k])
+            idx.push_back(i);
+        ensure_columns(b + 1, idx, t_compliance);
+      }
+    // W = sum_b B_b^T C_b B_b. Column k from s = C_b f_k (f_k: the force directions of
+    // candidate k, 2 or 2 (p + 1) entries), on the rows of the support only: O(|support| +
+    // nnz(B)) per column instead of a dense product. Without friction W is symmetric and
+    // row k is column k. With friction W_f = B^T C B_f: row k is B_k^T C F_l = F_l^T (C B_k)
+    // (C symmetric), so the same kind of vector, C B_k, gives the rows of unfilled columns.
+    const bool friction = !(L.F[0].empty() && L.F[1].empty());
+    Eigen::VectorXd col(m), row(m), s;
+    for (const int k : todo)
+      {
+        col.setZero(), row.setZero();
+        for (int b = 0; b < 2; ++b)
+          {
+            const auto &C   = cache_[b].flex->C;
+            const auto &sup = L.support[b];
+            const auto gather = [&](const std::vector<std::pair<int, double>> &f) {
+              s.setZero(Eigen::Index(sup.size()));
+              for (const auto &[i, v] : f)
+                {
+                  const double *c = C.col(i).data();
+                  for (std::size_t r = 0; r < sup.size(); ++r)
+                    s[Eigen::Index(r)] += v * c[sup[r]];
+                }
+            };
+            const auto dot = [&](const std::vector<std::pair<int, double>> &f) {
+              double v = 0;
+              for (const auto &[r, w] : f)
+                v += w * s[r];
+              return v;
+            };
+            const auto &fk = L.forces(b)[k];
+            if (!fk.empty())
+              {
+                gather(fk);
+                for (int l = 0; l < m; ++l)
+                  col[l] += dot(L.Bs[b][l]);
+              }
+            if (friction && !L.B[b][k].empty())
+              {
+                gather(L.B[b][k]);
+                for (int l = 0; l < m; ++l)
+                  if (!L.filled[l])
+                    row[l] += dot(L.Fs[b][l].empty() ? L.Bs[b][l] : L.Fs[b][l]);
+              }
+          }
+        L.W.col(k) = col;
+        if (!friction)
+          L.W.row(k) = col.transpose();
+        else
           for (int l = 0; l < m; ++l)
-            for (const auto &[j, w] : L.B[b][l])
-              L.W(l, k) += w * t[j];
-        }
-    if (L.F[0].empty() && L.F[1].empty())
-      L.W = 0.5 * (L.W + L.W.transpose()).eval();
+            if (!L.filled[l] && l != k)
+              L.W(k, l) = row[l];
+        L.filled[k] = 1;
+      }
   }
 
   Vec2 TwoBodyContact::rigid_velocity(const Scene &scene, int body, const Vec2 &x) const

@@ -11,8 +11,12 @@ namespace gearfem::contact
   /// [-a^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
   NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
-                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in)
+                      const Eigen::VectorXd &lambda0, int max_iterations, const Eigen::VectorXd &af_in,
+                      const std::function<void(const std::vector<int> &)> *fill)
   {
+    // The complementarity parameter of candidate k: 1/W_kk (any positive value where W_kk is
+    // not filled: lambda_k = 0 there).
+    const auto cpar = [&](int k) { return W(k, k) > 0 ? 1.0 / W(k, k) : 1.0; };
     const int m = int(W.rows());
     const Eigen::VectorXd &af = af_in.size() == m ? af_in : a;
     const bool symmetric      = af_in.size() != m;
@@ -50,6 +54,8 @@ namespace gearfem::contact
           if (active[k])
             A.push_back(k);
         const int n = int(A.size());
+        if (fill && n > 0)
+          (*fill)(A);
         r.lambda.setZero();
         if (control == Control::load)
           {
@@ -101,7 +107,7 @@ namespace gearfem::contact
         std::vector<char> next(m, 0);
         for (int k = 0; k < m; ++k)
           {
-            const double c = 1.0 / W(k, k);
+            const double c = cpar(k);
             next[k]        = r.lambda[k] - c * r.gap[k] > 0;
           }
         if (next == active)
@@ -111,7 +117,7 @@ namespace gearfem::contact
             double num = 0, den = 0;
             for (int k = 0; k < m; ++k)
               {
-                const double c  = 1.0 / W(k, k);
+                const double c  = cpar(k);
                 const double gk = r.gap[k] + D[k] * r.lambda[k];
                 const double v  = std::min(r.lambda[k], c * gk);
                 num += v * v;

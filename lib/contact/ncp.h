@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,16 @@ namespace gearfem::contact
   /// [-af^T lambda = T]. D = 0: Lagrange (PDAS); D = 1/eps: penalty (semismooth Newton).
   /// `af`: the load arm when it differs from the gap's a (friction; empty: a). W may be
   /// non-symmetric (friction): the active-set systems are solved by LU then.
+  /// `fill` (may be null): W is filled on demand. It is called with each active set before
+  /// the set's system is formed and must fill W's columns (and rows) of those candidates in
+  /// the matrix `W` refers to; only they are read, and the diagonal of the others only for
+  /// its sign (an unfilled zero counts as positive: lambda is zero there, so the gap's sign
+  /// alone decides whether the candidate enters the active set).
   NcpResult solve_ncp(const Eigen::MatrixXd &W, const Eigen::VectorXd &D, const Eigen::VectorXd &a,
                       const Eigen::VectorXd &ghat, Control control, double value, double q0,
                       const Eigen::VectorXd &lambda0, int max_iterations,
-                      const Eigen::VectorXd &af = Eigen::VectorXd());
+                      const Eigen::VectorXd &af = Eigen::VectorXd(),
+                      const std::function<void(const std::vector<int> &)> *fill = nullptr);
   /// A symmetric positive definite contact operator W (with its penalty compliance D on the
   /// diagonal of the active systems) given by what the active-set loop needs of it, so that a
   /// caller with structure (block-diagonal plus low rank: the coupled slices of

@@ -196,11 +196,17 @@ namespace gearfem::contact
           }
 
         t0 = Clock::now();
-        const Linearisation lin = linearise(scene, sr, q, lambda_node, out.t_compliance);
+        const double tc0 = out.t_compliance;
+        Linearisation lin = linearise(scene, sr, q, lambda_node, out.t_compliance, false);
+        // W's columns are filled as candidates enter the active set: the gaps of the others
+        // need only the active columns (lambda is zero off the active set).
+        const std::function<void(const std::vector<int> &)> fill = [&](const std::vector<int> &A) {
+          fill_delassus(lin, A, out.t_compliance);
+        };
         NcpResult ncp = solve_ncp(lin.W, lin.D, lin.a, lin.ghat, control, value, q, lin.lambda0,
-                                  options_.max_active_set_iterations, lin.af);
+                                  options_.max_active_set_iterations, lin.af, &fill);
         out.active_set_iterations += ncp.iterations;
-        out.t_solve += since(t0) - lin.t_flex; // flexibility columns are not contact solve time
+        out.t_solve += since(t0) - (out.t_compliance - tc0); // flexibility columns are not contact solve time
         if (!ncp.ok)
           {
             out.history.push_back("iteration " + std::to_string(it) + ": " + ncp.why);

@@ -255,6 +255,15 @@ namespace gearfem::contact
       const std::vector<std::vector<std::pair<int, double>>> &forces(int b) const { return F[b].empty() ? B[b] : F[b]; }
       const Eigen::VectorXd &load_arm() const { return af.size() ? af : a; }
       double t_flex = 0; ///< flexibility columns computed for it [s]
+      /// Per body: the universe indices of all candidates' force directions (sorted), the
+      /// rows of C that W needs, and B and the force directions in positions of that list.
+      std::vector<int> support[2];
+      std::vector<std::vector<std::pair<int, double>>> Bs[2], Fs[2];
+      /// Candidates whose column of W (and row: W is B^T C B_f with C symmetric) is filled.
+      /// W is filled on demand (fill_delassus): the complementarity solve needs only the
+      /// columns of the active candidates, so the flexibility columns of a candidate that
+      /// never carries a force are never computed.
+      std::vector<char> filled;
     };
     struct Flexibility
     {
@@ -295,11 +304,16 @@ namespace gearfem::contact
     /// false (nodal gap kept) where a sample has no smooth master point.
     bool integrate_gap(const Scene &scene, double q, Candidate &c, std::vector<FaceSample> &samples,
                        std::vector<int> &face_sample) const;
+    /// `full`: fill every column of W (the condensed cycle stores it); otherwise only the
+    /// columns of the warm start's loaded candidates, the rest on demand (fill_delassus).
     Linearisation linearise(const Scene &scene, const SearchResult &sr, double q,
-                            const std::vector<double> &lambda_node, double &t_compliance);
-    /// The Delassus operator W (W_f with friction) of `L` from its rows, after computing the
-    /// flexibility columns of the universe indices `used` (sorted and made unique here).
-    void delassus(Linearisation &L, std::vector<int> used[2], double &t_compliance);
+                            const std::vector<double> &lambda_node, double &t_compliance, bool full);
+    /// The rows of W's columns on `L`'s support (universe indices `used`, sorted and made
+    /// unique here), W zero and nothing filled.
+    void prepare_delassus(Linearisation &L, std::vector<int> used[2]) const;
+    /// Fill the columns and rows of the Delassus operator W (W_f with friction) of the
+    /// candidates `ks` not yet filled, after computing their flexibility columns.
+    void fill_delassus(Linearisation &L, const std::vector<int> &ks, double &t_compliance);
     void fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
                        const Linearisation &lin, const Eigen::VectorXd &lambda,
                        const Eigen::VectorXd &gap, const Scene &scene, double q) const;
