@@ -2,6 +2,8 @@
 // right-hand sides), UMFPACK through deal.II.
 #include "fem/direct_solver.h"
 
+#include <algorithm>
+
 #include "base/errors.h"
 
 #include <deal.II/lac/sparse_direct.h>
@@ -267,7 +269,10 @@ namespace gearfem::fem
       nnz[j] = PetscInt(rows.size());
     Mat S = nullptr;
     check(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), &S), "MatCreateSeqAIJ");
+    // Ascending: MatSetValues inserts an unsorted row entry by entry (quadratic in the row
+    // length: 2/3 of the time of a small request at the 3 400 rows of the demo's universe).
     std::vector<PetscInt> ri(rows.begin(), rows.end());
+    std::sort(ri.begin(), ri.end());
     const std::vector<PetscScalar> zeros(rows.size(), 0.0);
     for (const unsigned int j : cols)
       {
