@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -184,6 +185,23 @@ namespace gearfem::contact
             used[b].push_back(i);
       }
     prepare_delassus(L, used);
+    {
+      std::map<std::pair<int, int>, int> where;
+      for (int k = 0; k < m; ++k)
+        where[{cand[k].S, cand[k].node}] = k;
+      L.neighbours.assign(m, {});
+      for (int k = 0; k < m; ++k)
+        {
+          const auto &cS = cache_[cand[k].S - 1];
+          for (const int f : cS.node_faces[cand[k].node])
+            for (const int n : surface(cand[k].S).faces()[f].nodes)
+              {
+                const auto it = where.find({cand[k].S, n});
+                if (it != where.end() && it->second != k)
+                  L.neighbours[k].push_back(it->second);
+              }
+        }
+    }
     std::vector<int> ks;
     for (int k = 0; k < m; ++k)
       if (full || L.lambda0[k] > 0)
@@ -228,14 +246,25 @@ namespace gearfem::contact
         todo.push_back(k);
     if (todo.empty())
       return;
+    // The flexibility columns of the candidates and, when a MUMPS request is needed anyway,
+    // of their face neighbours.
+    std::vector<int> idx[2];
+    bool missing = false;
     for (int b = 0; b < 2; ++b)
-      {
-        std::vector<int> idx;
+      for (const int k : todo)
+        for (const auto &[i, v] : L.forces(b)[k])
+          {
+            idx[b].push_back(i);
+            missing = missing || cache_[b].flex->have[i] != 1;
+          }
+    if (missing && !L.neighbours.empty())
+      for (int b = 0; b < 2; ++b)
         for (const int k : todo)
-          for (const auto &[i, v] : L.forces(b)[k])
-            idx.push_back(i);
-        ensure_columns(b + 1, idx, t_compliance);
-      }
+          for (const int j : L.neighbours[k])
+            for (const auto &[i, v] : L.forces(b)[j])
+              idx[b].push_back(i);
+    for (int b = 0; b < 2; ++b)
+      ensure_columns(b + 1, idx[b], t_compliance);
     // W = sum_b B_b^T C_b B_b. Column k from s = C_b f_k (f_k: the force directions of
     // candidate k, 2 or 2 (p + 1) entries), on the rows of the support only: O(|support| +
     // nnz(B)) per column instead of a dense product. Without friction W is symmetric and

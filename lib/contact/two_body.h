@@ -264,6 +264,10 @@ namespace gearfem::contact
       /// columns of the active candidates, so the flexibility columns of a candidate that
       /// never carries a force are never computed.
       std::vector<char> filled;
+      /// Per candidate: the candidates whose slave nodes share a slave face with its own (the
+      /// next to enter the active set as a contact patch grows); their flexibility columns
+      /// come with its own (one MUMPS request has a fixed cost of about ten columns).
+      std::vector<std::vector<int>> neighbours;
     };
     struct Flexibility
     {
