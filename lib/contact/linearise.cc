@@ -37,6 +37,106 @@ namespace gearfem::contact
     }
   } // namespace
 
+  // Adds the gap of one slave point (its own nodal weights `slave_shape` on the slave face,
+  // or the node itself) with weight `coef` to row k: the slave and master force
+  // directions, and the arm dg/dq. Body 1 is the driven body, slave or master; its share
+  // of the force acts at its nodes (weights N_j), so the arm is the nodal one: then
+  // -a^T lambda is exactly the moment of the nodal forces about O1.
+  void TwoBodyContact::add_gap_point(Linearisation &L, const Scene &scene, const geometry::Placement P[2], int k,
+                                     int S, const GapPoint &gp, const std::vector<int> &slave_nodes,
+                                     const std::vector<double> &slave_shape, double coef, double &coef_sum) const
+  {
+    const double mu    = options_.friction;
+    const double v_tol = options_.friction_tolerance * kinematics_.reference_speed;
+    // Pair-frame velocity of the driven body's material point x per unit drive rate.
+    const auto velocity = [&](const Vec2 &x) {
+      if (drive_.kind == Drive::Kind::translation)
+        return drive_.direction;
+      const Vec2 c = scene.placement[0].centre;
+      return Vec2(-(x.y() - c.y()), x.x() - c.x());
+    };
+    const int M      = 3 - S;
+    const auto &ss   = surface(S);
+    const auto &ms   = surface(M);
+    const Vec2 nS    = rotate(gp.n_pair, -P[S - 1].angle);
+    const Vec2 nM    = gp.pr.normal;
+    const auto &cS   = cache_[S - 1];
+    const auto &cM   = cache_[M - 1];
+    // Friction: the force on the slave per unit lambda is n + mu s t (pair frame), s = -sign
+    // of the sliding velocity, ramped below v_tol; the master takes the opposite.
+    double fs = 0;
+    Vec2 fS = nS, fM = nM, f_pair = gp.n_pair;
+    // Rigid velocities of the two material points in contact: the slave point and its
+    // closest point on the displaced master (they differ by the elastic displacements).
+    const Vec2 xs = P[S - 1].apply(gp.x), xm = P[M - 1].apply(gp.pr.point);
+    const Vec2 dv = rigid_velocity(scene, S, xs) - rigid_velocity(scene, M, xm);
+    L.approach[k] += coef * dv.dot(gp.n_pair);
+    coef_sum += coef;
+    if (mu > 0)
+      {
+        const Vec2 t(-gp.n_pair.y(), gp.n_pair.x());
+        const double vs = dv.dot(t);
+        fs     = -std::clamp(vs / v_tol, -1.0, 1.0);
+        f_pair = gp.n_pair + mu * fs * t;
+        fS     = rotate(f_pair, -P[S - 1].angle);
+        fM     = rotate(f_pair, -P[M - 1].angle);
+        L.slip[k] += coef * fs;
+      }
+    for (std::size_t l = 0; l < slave_nodes.size(); ++l)
+      {
+        const auto &sn = ss.nodes()[slave_nodes[l]];
+        const double v = coef * slave_shape[l];
+        L.B[S - 1][k].push_back({cS.index[sn.dof_x], v * nS.x()});
+        L.B[S - 1][k].push_back({cS.index[sn.dof_y], v * nS.y()});
+        if (S == 1)
+          L.a[k] += v * gp.n_pair.dot(velocity(P[0].apply(sn.x)));
+        if (mu > 0)
+          {
+            L.F[S - 1][k].push_back({cS.index[sn.dof_x], v * fS.x()});
+            L.F[S - 1][k].push_back({cS.index[sn.dof_y], v * fS.y()});
+            if (S == 1)
+              L.af[k] += v * f_pair.dot(velocity(P[0].apply(sn.x)));
+          }
+      }
+    const auto &face = ms.faces()[gp.face];
+    for (std::size_t j = 0; j < face.nodes.size(); ++j)
+      {
+        const auto &mn = ms.nodes()[face.nodes[j]];
+        const double v = coef * gp.shape[j];
+        L.B[M - 1][k].push_back({cM.index[mn.dof_x], -v * nM.x()});
+        L.B[M - 1][k].push_back({cM.index[mn.dof_y], -v * nM.y()});
+        if (M == 1)
+          L.a[k] -= v * gp.n_pair.dot(velocity(P[0].apply(mn.x)));
+        if (mu > 0)
+          {
+            L.F[M - 1][k].push_back({cM.index[mn.dof_x], -v * fM.x()});
+            L.F[M - 1][k].push_back({cM.index[mn.dof_y], -v * fM.y()});
+            if (M == 1)
+              L.af[k] -= v * f_pair.dot(velocity(P[0].apply(mn.x)));
+          }
+      }
+  }
+
+  void TwoBodyContact::find_neighbours(Linearisation &L, const std::vector<Candidate> &cand) const
+  {
+    const int m = int(cand.size());
+    std::map<std::pair<int, int>, int> where;
+    for (int k = 0; k < m; ++k)
+      where[{cand[k].S, cand[k].node}] = k;
+    L.neighbours.assign(m, {});
+    for (int k = 0; k < m; ++k)
+      {
+        const auto &cS = cache_[cand[k].S - 1];
+        for (const int f : cS.node_faces[cand[k].node])
+          for (const int n : surface(cand[k].S).faces()[f].nodes)
+            {
+              const auto it = where.find({cand[k].S, n});
+              if (it != where.end() && it->second != k)
+                L.neighbours[k].push_back(it->second);
+            }
+      }
+  }
+
   TwoBodyContact::Linearisation TwoBodyContact::linearise(const Scene &scene, const SearchResult &sr, double q,
                                                           const std::vector<double> &lambda_node,
                                                           double &t_compliance, bool full)
@@ -46,14 +146,7 @@ namespace gearfem::contact
     const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
     // Material scale for the penalty: the smaller E.
     const double E = std::min(s1_->body().material().youngs_modulus, s2_->body().material().youngs_modulus);
-    const auto velocity = [&](const Vec2 &x) {
-      if (drive_.kind == Drive::Kind::translation)
-        return drive_.direction;
-      const Vec2 c = scene.placement[0].centre;
-      return Vec2(-(x.y() - c.y()), x.x() - c.x());
-    };
-    const double mu    = options_.friction;
-    const double v_tol = options_.friction_tolerance * kinematics_.reference_speed;
+    const double mu = options_.friction;
     Linearisation L;
     L.B[0].assign(m, {});
     L.B[1].assign(m, {});
@@ -66,80 +159,9 @@ namespace gearfem::contact
         L.slip = Eigen::VectorXd::Zero(m);
         L.sliding = Eigen::VectorXd::Zero(m);
       }
-    // Sliding velocity of the slave (body S) relative to the master along t = (-n_y, n_x)
-    // at the slave point x (pair frame), per unit drive rate.
     std::vector<double> coef_sum(m, 0.0);
     L.approach = Eigen::VectorXd::Zero(m);
     std::vector<int> used[2];
-    // Adds the gap of one slave point (its own nodal weights `slave_shape` on the slave face,
-    // or the node itself) with weight `coef` to row k: the slave and master force
-    // directions, and the arm dg/dq. Body 1 is the driven body, slave or master; its share
-    // of the force acts at its nodes (weights N_j), so the arm is the nodal one: then
-    // -a^T lambda is exactly the moment of the nodal forces about O1.
-    const auto add_point = [&](int k, int S, const GapPoint &gp, const std::vector<int> &slave_nodes,
-                               const std::vector<double> &slave_shape, double coef) {
-      const int M      = 3 - S;
-      const auto &ss   = surface(S);
-      const auto &ms   = surface(M);
-      const Vec2 nS    = rotate(gp.n_pair, -P[S - 1].angle);
-      const Vec2 nM    = gp.pr.normal;
-      const auto &cS   = cache_[S - 1];
-      const auto &cM   = cache_[M - 1];
-      // Friction: the force on the slave per unit lambda is n + mu s t (pair frame), s = -sign
-      // of the sliding velocity, ramped below v_tol; the master takes the opposite.
-      double fs = 0;
-      Vec2 fS = nS, fM = nM, f_pair = gp.n_pair;
-      // Rigid velocities of the two material points in contact: the slave point and its
-      // closest point on the displaced master (they differ by the elastic displacements).
-      const Vec2 xs = P[S - 1].apply(gp.x), xm = P[M - 1].apply(gp.pr.point);
-      const Vec2 dv = rigid_velocity(scene, S, xs) - rigid_velocity(scene, M, xm);
-      L.approach[k] += coef * dv.dot(gp.n_pair);
-      coef_sum[k] += coef;
-      if (mu > 0)
-        {
-          const Vec2 t(-gp.n_pair.y(), gp.n_pair.x());
-          const double vs = dv.dot(t);
-          fs     = -std::clamp(vs / v_tol, -1.0, 1.0);
-          f_pair = gp.n_pair + mu * fs * t;
-          fS     = rotate(f_pair, -P[S - 1].angle);
-          fM     = rotate(f_pair, -P[M - 1].angle);
-          L.slip[k] += coef * fs;
-        }
-      for (std::size_t l = 0; l < slave_nodes.size(); ++l)
-        {
-          const auto &sn = ss.nodes()[slave_nodes[l]];
-          const double v = coef * slave_shape[l];
-          L.B[S - 1][k].push_back({cS.index[sn.dof_x], v * nS.x()});
-          L.B[S - 1][k].push_back({cS.index[sn.dof_y], v * nS.y()});
-          if (S == 1)
-            L.a[k] += v * gp.n_pair.dot(velocity(P[0].apply(sn.x)));
-          if (mu > 0)
-            {
-              L.F[S - 1][k].push_back({cS.index[sn.dof_x], v * fS.x()});
-              L.F[S - 1][k].push_back({cS.index[sn.dof_y], v * fS.y()});
-              if (S == 1)
-                L.af[k] += v * f_pair.dot(velocity(P[0].apply(sn.x)));
-            }
-        }
-      const auto &face = ms.faces()[gp.face];
-      for (std::size_t j = 0; j < face.nodes.size(); ++j)
-        {
-          const auto &mn = ms.nodes()[face.nodes[j]];
-          const double v = coef * gp.shape[j];
-          L.B[M - 1][k].push_back({cM.index[mn.dof_x], -v * nM.x()});
-          L.B[M - 1][k].push_back({cM.index[mn.dof_y], -v * nM.y()});
-          if (M == 1)
-            L.a[k] -= v * gp.n_pair.dot(velocity(P[0].apply(mn.x)));
-          if (mu > 0)
-            {
-              L.F[M - 1][k].push_back({cM.index[mn.dof_x], -v * fM.x()});
-              L.F[M - 1][k].push_back({cM.index[mn.dof_y], -v * fM.y()});
-              if (M == 1)
-                L.af[k] -= v * f_pair.dot(velocity(P[0].apply(mn.x)));
-            }
-        }
-    };
-    // Merge repeated universe indices of a row.
     for (int k = 0; k < m; ++k)
       {
         const auto &c  = cand[k];
@@ -148,12 +170,13 @@ namespace gearfem::contact
         auto &cS       = cache_[S - 1];
         L.a[k]         = 0;
         if (c.terms.empty())
-          add_point(k, S, c.at, {c.node}, {1.0}, 1.0);
+          add_gap_point(L, scene, P, k, S, c.at, {c.node}, {1.0}, 1.0, coef_sum[k]);
         else
           for (const auto &[i, coef] : c.terms)
             {
               const auto &sm = sr.samples[i];
-              add_point(k, S, sm.gp, surface(S).faces()[sm.slave_face].nodes, sm.slave_shape, coef);
+              add_gap_point(L, scene, P, k, S, sm.gp, surface(S).faces()[sm.slave_face].nodes, sm.slave_shape, coef,
+                            coef_sum[k]);
             }
         for (int b = 0; b < 2; ++b)
           {
@@ -185,23 +208,7 @@ namespace gearfem::contact
             used[b].push_back(i);
       }
     prepare_delassus(L, used);
-    {
-      std::map<std::pair<int, int>, int> where;
-      for (int k = 0; k < m; ++k)
-        where[{cand[k].S, cand[k].node}] = k;
-      L.neighbours.assign(m, {});
-      for (int k = 0; k < m; ++k)
-        {
-          const auto &cS = cache_[cand[k].S - 1];
-          for (const int f : cS.node_faces[cand[k].node])
-            for (const int n : surface(cand[k].S).faces()[f].nodes)
-              {
-                const auto it = where.find({cand[k].S, n});
-                if (it != where.end() && it->second != k)
-                  L.neighbours[k].push_back(it->second);
-              }
-        }
-    }
+    find_neighbours(L, cand);
     std::vector<int> ks;
     for (int k = 0; k < m; ++k)
       if (full || L.lambda0[k] > 0)

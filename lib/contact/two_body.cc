@@ -24,6 +24,48 @@ namespace gearfem::contact
     {
       return std::chrono::duration<double>(Clock::now() - t0).count();
     }
+
+    /// The settle test of the geometric iteration, with its state: the last steps of q and
+    /// lambda and the active set, and whether that set was unchanged over them.
+    struct SettleTest
+    {
+      std::vector<int> prev_active;
+      double prev_dq = 0, prev_dl = 0;
+      bool prev_same = false;
+
+      /// Whether iterate `it`, with active set `active`, step dq of the rotation (of size
+      /// qs), and relative force step dlrel, is converged to `tolerance`.
+      bool settled(const std::vector<int> &active, int it, bool displacement, double dq, double qs, double dlrel,
+                   double tolerance)
+      {
+        // The rotation settles to a relative tolerance, with a floor of 8 ulps of an angle
+        // (1.8e-15 rad): at vanishing load q is a few 1e-9 rad and its iterates differ by
+        // the round-off of the placed geometry (measured 3-6e-17 rad on the 50/50 m 3 pair;
+        // about ulp(centre distance)/radius in general), which no relative test can get
+        // below. At ordinary loads (q > 1e-5 rad) tolerance * q is above the floor.
+        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
+        const double q_tol = tolerance * qs + q_floor, l_tol = std::sqrt(tolerance) * 1e-2;
+        const bool same    = it > 0 && active == prev_active;
+        bool done          = same && (displacement || dq <= q_tol) && dlrel <= l_tol;
+        // On a fixed active set the iteration converges linearly, by a factor rho of about
+        // 1e-3 per iteration on gear pairs (the projection points move with the load). The
+        // distance of this iterate from the limit is then about rho / (1 - rho) times its
+        // step, rho the ratio of the last two steps: when that estimate is within the
+        // tolerance the iterate is taken, one confirming search and solve earlier (measured on
+        // the demo: steps 6e-6, 4e-9, 3e-12 of q, so the taken iterate is 3e-12 from the one the
+        // step test takes).
+        const auto distance = [](double step, double prev_step) {
+          const double rho = prev_step > 0 ? step / prev_step : 1.0;
+          return rho < 0.1 ? rho / (1 - rho) * step : std::numeric_limits<double>::infinity();
+        };
+        if (!done && same && prev_same && (displacement || distance(dq, prev_dq) <= q_tol) &&
+            (dlrel == 0 || distance(dlrel, prev_dl) <= l_tol))
+          done = true;
+        prev_active = active;
+        prev_dq = dq, prev_dl = dlrel, prev_same = same;
+        return done;
+      }
+    };
   } // namespace
 
   TwoBodyContact::TwoBodyContact(const ContactSurface &s1, const ContactSurface &s2,
@@ -171,11 +213,8 @@ namespace gearfem::contact
           }
       }
 
-    std::vector<int> prev_active;
     double prev_q = q;
-    // The last steps of q and lambda, and whether the active set was unchanged over them.
-    double prev_dq = 0, prev_dl = 0;
-    bool prev_same = false;
+    SettleTest settle;
     for (int it = 0; it < options_.max_geometry_iterations; ++it)
       {
         auto t0 = Clock::now();
@@ -255,32 +294,9 @@ namespace gearfem::contact
           << ", complementarity " << to_string_g(ncp.complementarity);
         out.history.push_back(h.str());
 
-        // The rotation settles to a relative tolerance, with a floor of 8 ulps of an angle
-        // (1.8e-15 rad): at vanishing load q is a few 1e-9 rad and its iterates differ by
-        // the round-off of the placed geometry (measured 3-6e-17 rad on the 50/50 m 3 pair;
-        // about ulp(centre distance)/radius in general), which no relative test can get
-        // below. At ordinary loads (q > 1e-5 rad) tolerance * q is above the floor.
-        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
-        const double q_tol = options_.tolerance * qs + q_floor, l_tol = std::sqrt(options_.tolerance) * 1e-2;
-        const bool same    = it > 0 && active == prev_active;
-        bool settled       = same && (control == Control::displacement || dq <= q_tol) && dlrel <= l_tol;
-        // On a fixed active set the iteration converges linearly, by a factor rho of about
-        // 1e-3 per iteration on gear pairs (the projection points move with the load). The
-        // distance of this iterate from the limit is then about rho / (1 - rho) times its
-        // step, rho the ratio of the last two steps: when that estimate is within the
-        // tolerance the iterate is taken, one confirming search and solve earlier (measured on
-        // the demo: steps 6e-6, 4e-9, 3e-12 of q, so the taken iterate is 3e-12 from the one the
-        // step test takes).
-        const auto distance = [](double step, double prev_step) {
-          const double rho = prev_step > 0 ? step / prev_step : 1.0;
-          return rho < 0.1 ? rho / (1 - rho) * step : std::numeric_limits<double>::infinity();
-        };
-        if (!settled && same && prev_same && (control == Control::displacement || distance(dq, prev_dq) <= q_tol) &&
-            (dlrel == 0 || distance(dlrel, prev_dl) <= l_tol))
-          settled = true;
-        prev_active = active;
-        prev_q      = q;
-        prev_dq = dq, prev_dl = dlrel, prev_same = same;
+        const bool settled = settle.settled(active, it, control == Control::displacement, dq, qs, dlrel,
+                                            options_.tolerance);
+        prev_q             = q;
         if (!settled)
           continue;
 

@@ -312,6 +312,13 @@ namespace gearfem::contact
     /// columns of the warm start's loaded candidates, the rest on demand (fill_delassus).
     Linearisation linearise(const Scene &scene, const SearchResult &sr, double q,
                             const std::vector<double> &lambda_node, double &t_compliance, bool full);
+    /// Add the gap of one slave point to row k of L (linearise): its force directions on both
+    /// bodies, its load arm, approach and friction factor; `coef_sum` accumulates `coef`.
+    void add_gap_point(Linearisation &L, const Scene &scene, const geometry::Placement P[2], int k, int S,
+                       const GapPoint &gp, const std::vector<int> &slave_nodes,
+                       const std::vector<double> &slave_shape, double coef, double &coef_sum) const;
+    /// L.neighbours: per candidate, the candidates on the slave faces around its node.
+    void find_neighbours(Linearisation &L, const std::vector<Candidate> &cand) const;
     /// The rows of W's columns on `L`'s support (universe indices `used`, sorted and made
     /// unique here), W zero and nothing filled.
     void prepare_delassus(Linearisation &L, std::vector<int> used[2]) const;

@@ -164,6 +164,9 @@ namespace gearfem::mesh
     std::size_t n_inverted = 0;           ///< cells with a non-positive corner Jacobian
   };
   QualityReport quality(const MeshData &mesh);
+  /// Where the first inverted cell of `mesh` is, and how many of its vertices lie on the
+  /// boundary, as a phrase for an error message ("" when none is inverted).
+  std::string inverted_cell_location(const MeshData &mesh);
 
   /// Untangle the cells that the snap of the boundary vertices onto the exact curves (or
   /// gmsh itself) left inverted: Laplacian smoothing of the interior vertices of inverted
