@@ -14,7 +14,7 @@ namespace gearfem::choice
   /// The entries the user set in the input: they override the automatic choice.
   struct FixedSettings
   {
-    bool h_contact = false, h_fillet = false, h_corner = false, degree = false, model = false;
+    bool h_contact = false, h_fillet = false, h_corner = false, degree = false, model = false, tiled = false;
   };
 
   struct ModelChoice

@@ -17,6 +17,7 @@ namespace gearfem::choice
     f.h_fillet  = set("Mesh", "h_fillet");
     f.h_corner  = set("Mesh", "h_corner");
     f.model     = set("Mesh", "Model");
+    f.tiled     = set("Mesh", "Tiled teeth");
     f.degree    = set("Finite elements", "Degree");
     return f;
   }

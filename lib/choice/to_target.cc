@@ -314,6 +314,11 @@ namespace gearfem::choice
     cand.mesh[0] = o.choice.mesh[0];
     cand.mesh[1] = o.choice.mesh[1];
     cand.degree  = o.choice.degree;
+    // Full gears by tiles: gmsh's time no longer grows with the teeth, so a level costs its
+    // solves (validation/model_choice); `Mesh/Tiled teeth`, when set, decides.
+    if (!fixed.tiled)
+      for (auto &g : cand.mesh)
+        g.tiled = true;
     const double m = in.pair->gear(1).parameters().rack.module;
     const bool asks_contact = target.asks(Quantity::mean_ste) || target.asks(Quantity::pp_ste) ||
                               target.asks(Quantity::p_max);

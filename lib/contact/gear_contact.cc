@@ -76,7 +76,7 @@ namespace gearfem::contact
         m.h_fillet != n.h_fillet || m.h_coast != n.h_coast || m.h_corner != n.h_corner || m.h_body != n.h_body ||
         m.h_tooth != n.h_tooth || m.growth != n.growth || m.bore_radius != n.bore_radius ||
         m.rim_thickness != n.rim_thickness || m.fine_teeth != n.fine_teeth || m.refinements != n.refinements ||
-        m.spline_samples != n.spline_samples || m.tooth_angles != n.tooth_angles)
+        m.spline_samples != n.spline_samples || m.tooth_angles != n.tooth_angles || m.tiled != n.tiled)
       return false;
     const auto &e = material[0], &f = material[1];
     if (e.youngs_modulus != f.youngs_modulus || e.poisson_ratio != f.poisson_ratio || e.thickness != f.thickness ||

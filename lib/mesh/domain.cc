@@ -132,6 +132,17 @@ namespace gearfem::mesh
     return pc;
   }
 
+  ParametricCurve ParametricCurve::rotated(double angle) const
+  {
+    const double c = std::cos(angle), s = std::sin(angle);
+    auto rot       = [c, s](const Vec2 &v) { return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()); };
+    ParametricCurve pc;
+    pc.point = [f = point, rot](double t) { return rot(f(t)); };
+    pc.d1    = [f = d1, rot](double t) { return rot(f(t)); };
+    pc.d2    = [f = d2, rot](double t) { return rot(f(t)); };
+    return pc;
+  }
+
   namespace
   {
     /// gmsh is a global singleton: serialise its use within the process.
@@ -359,14 +370,21 @@ namespace gearfem::mesh
               const auto &piece = out.pieces[first + i];
               const double h = piece.size > 0 ? std::min(piece.size, domain.h_body) : domain.h_body;
               const double length = piece_length(piece);
-              lengths[i] = length / h;
-              n_edges[i] = std::max(1, int(std::lround(length / h)));
+              lengths[i] = piece.edges > 0 ? 0.0 : length / h; // a fixed count is never bumped
+              n_edges[i] = piece.edges > 0 ? piece.edges : std::max(1, int(std::lround(length / h)));
               total += n_edges[i];
             }
           if (total % 2 == 1)
             ++n_edges[std::max_element(lengths.begin(), lengths.end()) - lengths.begin()];
           for (std::size_t i = 0; i < n_pieces; ++i)
-            gmsh::model::mesh::setTransfiniteCurve(m.piece_to_curve[first + i], n_edges[i] + 1);
+            {
+              const auto &piece = out.pieces[first + i];
+              if (piece.edges > 0 && piece.progression != 1.0)
+                gmsh::model::mesh::setTransfiniteCurve(m.piece_to_curve[first + i], n_edges[i] + 1, "Progression",
+                                                       piece.progression);
+              else
+                gmsh::model::mesh::setTransfiniteCurve(m.piece_to_curve[first + i], n_edges[i] + 1);
+            }
           first += n_pieces;
         }
     }
@@ -610,6 +628,58 @@ namespace gearfem::mesh
       gmsh_failure("produced " + std::to_string(q.n_inverted) + " inverted cells" + inverted_cell_location(out),
                    "refine the mesh near strongly curved boundaries (Mesh/h_fillet, Mesh/h_contact)");
     return out;
+  }
+
+  void write_mesh_msh(const MeshData &mesh, const std::filesystem::path &file, const std::string &model_name)
+  {
+    std::lock_guard<std::mutex> lock(gmsh_mutex);
+    GmshSession session;
+    try
+      {
+        gmsh::model::add(model_name);
+        std::vector<std::size_t> tags(mesh.vertices.size());
+        std::vector<double> xyz;
+        xyz.reserve(3 * mesh.vertices.size());
+        for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+          {
+            tags[v] = v + 1;
+            xyz.insert(xyz.end(), {mesh.vertices[v].x(), mesh.vertices[v].y(), 0.0});
+          }
+        const int surface = gmsh::model::addDiscreteEntity(2);
+        gmsh::model::mesh::addNodes(2, surface, tags, xyz);
+        std::vector<std::size_t> quads, quad_nodes;
+        std::size_t element = 0;
+        for (const auto &c : mesh.cells)
+          {
+            quads.push_back(++element);
+            for (const unsigned v : {c[0], c[1], c[3], c[2]}) // gmsh order: counter-clockwise
+              quad_nodes.push_back(v + 1);
+          }
+        gmsh::model::mesh::addElementsByType(surface, 3, quads, quad_nodes);
+        gmsh::model::addPhysicalGroup(2, {surface}, 1);
+        gmsh::model::setPhysicalName(2, 1, "body");
+        std::map<unsigned int, std::vector<std::size_t>> by_id;
+        for (const auto &e : mesh.boundary_edges)
+          by_id[e.boundary_id].insert(by_id[e.boundary_id].end(), {e.v0 + 1u, e.v1 + 1u});
+        for (const auto &[id, nodes] : by_id)
+          {
+            const int curve = gmsh::model::addDiscreteEntity(1);
+            std::vector<std::size_t> lines(nodes.size() / 2);
+            for (auto &l : lines)
+              l = ++element;
+            gmsh::model::mesh::addElementsByType(curve, 1, lines, nodes);
+            gmsh::model::addPhysicalGroup(1, {curve}, int(id));
+            gmsh::model::setPhysicalName(1, int(id), boundary::name(id));
+          }
+        gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+        auto tmp = file.parent_path() / ("." + file.stem().string() + ".tmp" + std::to_string(::getpid()) + ".msh");
+        gmsh::write(tmp.string());
+        std::filesystem::rename(tmp, file);
+      }
+    catch (const std::string &e)
+      {
+        gmsh_failure("error writing " + file.string() + ": " + e, session.last_errors());
+      }
   }
 
   Domain annulus_domain(double r_inner, double r_outer, double h)

@@ -73,6 +73,8 @@ namespace gearfem::mesh
     static ParametricCurve circle(const Vec2 &c, double r);
     /// Straight line a + t (b - a).
     static ParametricCurve line(const Vec2 &a, const Vec2 &b);
+    /// This curve turned by `angle` [rad] about the origin (same parameter).
+    ParametricCurve rotated(double angle) const;
   };
 
   /// One piece of a loop: the curve from parameter t0 to t1 (t1 < t0 allowed), with its
@@ -86,6 +88,10 @@ namespace gearfem::mesh
     bool straight = false; ///< a straight line (flat manifold, no projection needed)
     int tooth = -1;        ///< tooth index for gear outlines, -1 otherwise
     int segment = -1;      ///< index into ToothProfile::segments() for gear outlines
+    /// A fixed node distribution (straight pieces only): this many edges, their lengths in
+    /// geometric progression by `progression` from start to end; 0: from `size`.
+    int edges = 0;
+    double progression = 1.0;
     Vec2 start() const { return curve.point(t0); }
     Vec2 end() const { return curve.point(t1); }
   };
@@ -148,6 +154,9 @@ namespace gearfem::mesh
   /// vertices onto the exact curves, and orient the cells. Throws InputError("Mesh", ...)
   /// when gmsh fails or leaves triangles or inverted cells.
   MeshData mesh_domain(const Domain &domain, const MeshingOptions &options = {});
+  /// Write `mesh` as MSH 4.1 through gmsh (atomic): its vertices, quads and boundary edges,
+  /// one physical group per boundary id (named as boundary::name).
+  void write_mesh_msh(const MeshData &mesh, const std::filesystem::path &file, const std::string &model_name);
 
   /// Annulus r_inner < r < r_outer about the origin: bore id 1 inside, id 4 outside.
   Domain annulus_domain(double r_inner, double r_outer, double h);

@@ -497,6 +497,16 @@ namespace gearfem::mesh
     o.samples_per_piece = p.spline_samples;
     o.model_name        = "gear_z" + std::to_string(tooth.teeth());
     o.fallbacks         = p.quad_fallbacks;
+    if (p.tiled && p.model == GearMeshParameters::Model::full_gear && p.tooth_angles.empty() && tooth.teeth() >= 3)
+      {
+        MeshData m = mesh_gear_tiled(tooth, p, o);
+        if (!m.cells.empty())
+          {
+            if (!msh_file.empty())
+              write_mesh_msh(m, msh_file, o.model_name);
+            return m;
+          }
+      }
     return mesh_domain(gear_domain(tooth, p), o);
   }
 } // namespace gearfem::mesh

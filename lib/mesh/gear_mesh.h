@@ -42,6 +42,9 @@ namespace gearfem::mesh
     std::vector<double> flank_split_radii;
     unsigned int refinements = 0; ///< global refinements after import
     int spline_samples       = 24; ///< gmsh spline points per outline segment
+    /// Full gear: mesh one fine and one coarse tooth tile and turn copies into place
+    /// (mesh_gear_tiled); false, a sector or tooth_angles: the whole outline in one gmsh run.
+    bool tiled = false;
     /// Not a `Mesh` entry: false makes a failed first quad recombination throw
     /// RecombinationFailed instead of the slow retries and the subdivision fallback
     /// (MeshingOptions::fallbacks), so that the model choice tries other sizes (choice/).
@@ -93,6 +96,16 @@ namespace gearfem::mesh
   /// circle that meet at the mean angle (delta_(k-1) + delta_k) / 2 past the nominal one: an arc
   /// of the root circle turned about the centre stays on it, so the outline closes exactly.
   Domain gear_domain(const geometry::ToothProfile &tooth, const GearMeshParameters &p);
+
+  /// A full gear meshed by tiles: tooth 0 as a one-tooth sector down to the gear's inner
+  /// radius, once with the fine sizes and once with the coarse ones, joined on radial cuts
+  /// that carry one fixed node distribution (geometric from the root land's size at the
+  /// outline to h_body at the bore), then turned into the place of every tooth, with the
+  /// boundary ids and exact curves of that tooth. Empty MeshData (no cells) when the tiles'
+  /// cuts do not match (a tile that gmsh subdivided) or the rim is too thin for the graded cut,
+  /// with the reason in `why`: the caller meshes the whole gear.
+  MeshData mesh_gear_tiled(const geometry::ToothProfile &tooth, const GearMeshParameters &p,
+                           const MeshingOptions &options, std::string *why = nullptr);
 
   /// Mesh the gear body with gmsh (and write `msh_file` when not empty).
   MeshData mesh_gear(const geometry::ToothProfile &tooth, const GearMeshParameters &p,

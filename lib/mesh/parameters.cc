@@ -10,6 +10,7 @@
 namespace gearfem::mesh
 {
   using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
@@ -57,6 +58,14 @@ namespace gearfem::mesh
     prm.declare_entry("Spline samples", "24", Integer(4, 400),
                       "Points per outline segment of the gmsh spline geometry (the mesh is snapped "
                       "to the exact curves afterwards). Units: none.");
+    prm.declare_entry("Tiled teeth", "false", Bool(),
+                      "Full gears: mesh one tooth of each size (fine and coarse) with gmsh and "
+                      "turn copies into place, instead of meshing the whole gear (the coarse teeth "
+                      "are the same at every position; gmsh's time falls by about z/2). The teeth "
+                      "join on radial cuts with one fixed node distribution; where the tiles do not "
+                      "join, the whole gear is meshed as usual. Solve/Target tiles unless this "
+                      "entry is set. Units: none.",
+                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
     for (const char *g : {"Gear 1", "Gear 2"})
       {
         prm.enter_subsection(g);
@@ -92,6 +101,7 @@ namespace gearfem::mesh
     p.growth         = params::get_double(prm, "Growth ratio");
     p.refinements    = params::get_integer(prm, "Global refinements");
     p.spline_samples = params::get_integer(prm, "Spline samples");
+    p.tiled          = prm.get_bool("Tiled teeth");
     prm.enter_subsection(gear == 2 ? "Gear 2" : "Gear 1");
     p.bore_radius   = params::get_double(prm, "Bore radius") * units::mm;
     p.rim_thickness = params::get_double(prm, "Rim thickness") * units::mm;

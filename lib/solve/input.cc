@@ -355,6 +355,8 @@ namespace gearfem::solve
           << ' ' << m.h_coast << ' ' << m.h_corner << ' ' << m.h_body << ' ' << m.h_tooth << ' ' << m.growth << ' '
           << m.bore_radius << ' ' << m.rim_thickness << ' ' << m.fine_teeth << ' ' << m.refinements << ' '
           << m.spline_samples << '\n';
+        if (m.tiled)
+          s << "tiled teeth\n"; // a different mesh of the same sizes (no line: meshed whole)
         // Teeth turned by their pitch deviations (Deviations/Model = geometry); none: no line.
         if (!m.tooth_angles.empty())
           {

@@ -177,7 +177,7 @@ def pairs(designs):
 def fixed_rungs(pair):
     """name -> (label, Mesh entries) of the fixed ladder: h_contact m/10, m/15, m/30 (unset: the
     default), m/45, each with the default h_fillet and with h_fillet m/12 (not repeated where
-    m/12 is the default 0.25 mm, i.e. m 3)."""
+    m/12 is the default 0.25 mm, i.e. m 3); full gears by tiles, as the choice meshes them."""
     m = pair["module"]
     out = {}
     for n in LADDER:
@@ -187,9 +187,10 @@ def fixed_rungs(pair):
             mesh = {} if n == 30 else {"h_contact": fmt(m / n)}
             if f12:
                 mesh["h_fillet"] = fmt(m / 12)
+            mesh["Tiled teeth"] = "true"  # as the automatic choice meshes (docs/fem.md)
             hc = f"m/{n} = {fmt(m / n)} mm" + (" (default)" if n == 30 else "")
             hf = f"m/12 = {fmt(m / 12)} mm" if f12 else f"{H_FILLET_DEFAULT:g} mm (default)"
-            out[f"m{n}" + ("_f12" if f12 else "")] = (f"h_contact {hc}, h_fillet {hf}", mesh)
+            out[f"m{n}" + ("_f12" if f12 else "")] = (f"h_contact {hc}, h_fillet {hf}, tiled teeth", mesh)
     return out
 
 
