@@ -132,17 +132,6 @@ namespace gearfem::mesh
     return pc;
   }
 
-  ParametricCurve ParametricCurve::rotated(double angle) const
-  {
-    const double c = std::cos(angle), s = std::sin(angle);
-    auto rot       = [c, s](const Vec2 &v) { return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()); };
-    ParametricCurve pc;
-    pc.point = [f = point, rot](double t) { return rot(f(t)); };
-    pc.d1    = [f = d1, rot](double t) { return rot(f(t)); };
-    pc.d2    = [f = d2, rot](double t) { return rot(f(t)); };
-    return pc;
-  }
-
   namespace
   {
     /// gmsh is a global singleton: serialise its use within the process.

@@ -73,8 +73,6 @@ namespace gearfem::mesh
     static ParametricCurve circle(const Vec2 &c, double r);
     /// Straight line a + t (b - a).
     static ParametricCurve line(const Vec2 &a, const Vec2 &b);
-    /// This curve turned by `angle` [rad] about the origin (same parameter).
-    ParametricCurve rotated(double angle) const;
   };
 
   /// One piece of a loop: the curve from parameter t0 to t1 (t1 < t0 allowed), with its

@@ -497,7 +497,7 @@ namespace gearfem::mesh
     o.samples_per_piece = p.spline_samples;
     o.model_name        = "gear_z" + std::to_string(tooth.teeth());
     o.fallbacks         = p.quad_fallbacks;
-    if (p.tiled && p.model == GearMeshParameters::Model::full_gear && p.tooth_angles.empty() && tooth.teeth() >= 3)
+    if (p.tiled) // mesh_gear_tiled refuses what it does not serve
       {
         MeshData m = mesh_gear_tiled(tooth, p, o);
         if (!m.cells.empty())

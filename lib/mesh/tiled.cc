@@ -6,7 +6,6 @@
 // coarse teeth are the same mesh.
 #include "mesh/gear_mesh.h"
 
-#include "base/units.h"
 
 #include <algorithm>
 #include <chrono>
@@ -18,14 +17,6 @@ namespace gearfem::mesh
 {
   namespace
   {
-    using units::pi;
-
-    Vec2 turn(const Vec2 &v, double angle)
-    {
-      const double c = std::cos(angle), s = std::sin(angle);
-      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-    }
-
     /// One meshed tile and the vertices of its two cuts, ordered by radius.
     struct Tile
     {
@@ -142,14 +133,14 @@ namespace gearfem::mesh
           const Tile &t              = *placed[std::size_t(j)];
           cut_first[std::size_t(j)] = unsigned(out.vertices.size());
           for (const unsigned v : t.cw)
-            out.vertices.push_back(turn(t.mesh.vertices[v], 2 * pi * j / z));
+            out.vertices.push_back(tooth.rotate_to_tooth(t.mesh.vertices[v], j));
         }
       cut_first[std::size_t(z)] = cut_first[0];
       const auto &segs = tooth.segments();
       for (int j = 0; j < z; ++j)
         {
           const Tile &t      = *placed[std::size_t(j)];
-          const double angle = 2 * pi * j / z;
+          const double angle = j * tooth.angular_pitch();
           std::vector<unsigned int> map(t.mesh.vertices.size(), ~0u);
           for (std::size_t i = 0; i < t.cw.size(); ++i)
             map[t.cw[i]] = cut_first[std::size_t(j)] + unsigned(i);
@@ -159,14 +150,16 @@ namespace gearfem::mesh
             if (map[v] == ~0u)
               {
                 map[v] = unsigned(out.vertices.size());
-                out.vertices.push_back(turn(t.mesh.vertices[v], angle));
+                out.vertices.push_back(tooth.rotate_to_tooth(t.mesh.vertices[v], j));
               }
           for (const auto &c : t.mesh.cells)
             out.cells.push_back({map[c[0]], map[c[1]], map[c[2]], map[c[3]]});
-          // The tile's pieces as this tooth's: its exact curves (as gear_domain builds them) and ids.
-          const int first = int(out.pieces.size());
-          for (BoundaryPiece piece : t.mesh.pieces)
+          // The tile's pieces as this tooth's: its exact curves (as gear_domain builds them) and
+          // ids; the cuts are interior here.
+          std::vector<int> piece_of(t.mesh.pieces.size(), -1);
+          for (std::size_t i = 0; i < t.mesh.pieces.size(); ++i)
             {
+              BoundaryPiece piece = t.mesh.pieces[i];
               if (piece.segment >= 0)
                 {
                   piece.curve       = ParametricCurve::from(segs[std::size_t(piece.segment)].curve, angle);
@@ -179,13 +172,16 @@ namespace gearfem::mesh
                   piece.t0 += angle, piece.t1 += angle;
                 }
               else
-                piece.curve = piece.curve.rotated(angle); // a cut: interior here, no edges
+                continue;
+              piece_of[i] = int(out.pieces.size());
               out.pieces.push_back(piece);
             }
           for (const auto &e : t.mesh.boundary_edges)
-            if (e.boundary_id != boundary::cut_cw && e.boundary_id != boundary::cut_ccw)
-              out.boundary_edges.push_back(
-                {map[e.v0], map[e.v1], out.pieces[std::size_t(first + e.piece)].boundary_id, first + e.piece});
+            if (piece_of[std::size_t(e.piece)] >= 0)
+              {
+                const int k = piece_of[std::size_t(e.piece)];
+                out.boundary_edges.push_back({map[e.v0], map[e.v1], out.pieces[std::size_t(k)].boundary_id, k});
+              }
         }
       return out;
     }
