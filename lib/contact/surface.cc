@@ -24,6 +24,14 @@ namespace gearfem::contact
           v *= (x - xi[k]) / (xi[j] - xi[k]);
       return v;
     }
+    /// Distance from q to the segment [a, b].
+    double segment_distance(const Vec2 &q, const Vec2 &a, const Vec2 &b)
+    {
+      const Vec2 ab   = b - a;
+      const double l2 = ab.squaredNorm();
+      const double s  = l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+      return (q - a - s * ab).norm();
+    }
     double box_distance(const Vec2 &q, const Vec2 &lo, const Vec2 &hi)
     {
       const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
@@ -143,6 +151,8 @@ namespace gearfem::contact
       std::sort(pf.begin(), pf.end(), [&](int a, int b) { return faces_[a].t_lo < faces_[b].t_lo; });
 
     piece_box_.assign(mesh.pieces.size(), {Vec2(0, 0), Vec2(0, 0)});
+    piece_samples_.assign(mesh.pieces.size(), {});
+    piece_sag_.assign(mesh.pieces.size(), 0.0);
     for (std::size_t p = 0; p < mesh.pieces.size(); ++p)
       {
         if (!surface_piece_[p])
@@ -157,7 +167,79 @@ namespace gearfem::contact
           }
         const double pad = 0.02 * (hi - lo).norm() + 1e-9; // chord sag between samples
         piece_box_[p] = {lo - Vec2(pad, pad), hi + Vec2(pad, pad)};
+        // The samples of closest_parameter (the same parameters, so the same answer), and
+        // the largest distance of the curve from their chords at a quarter, the middle and
+        // three quarters of each, doubled: the curves are smooth at this spacing.
+        const int m     = mesh::ParametricCurve::closest_samples;
+        const double a  = std::min(pc.t0, pc.t1), b = std::max(pc.t0, pc.t1);
+        auto &samples   = piece_samples_[p];
+        samples.resize(m + 1);
+        for (int i = 0; i <= m; ++i)
+          samples[i] = pc.curve.point(a + (b - a) * i / m);
+        double sag = 0;
+        for (int i = 0; i < m; ++i)
+          for (const double f : {0.25, 0.5, 0.75})
+            sag = std::max(sag, segment_distance(pc.curve.point(a + (b - a) * (i + f) / m), samples[i], samples[i + 1]));
+        piece_sag_[p] = 2 * sag + 1e-12 + 1e-9 * (b - a) * pc.curve.d1(0.5 * (a + b)).norm();
       }
+    // The grid: about as many cells as surface pieces, square.
+    Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+    int n = 0;
+    for (std::size_t p = 0; p < mesh.pieces.size(); ++p)
+      if (surface_piece_[p])
+        lo = lo.cwiseMin(piece_box_[p][0]), hi = hi.cwiseMax(piece_box_[p][1]), ++n;
+    const Vec2 span = (hi - lo).cwiseMax(Vec2(1e-9, 1e-9));
+    grid_.cell      = std::sqrt(span.x() * span.y() / std::max(n, 1));
+    grid_.origin    = lo;
+    grid_.nx        = std::max(1, int(std::ceil(span.x() / grid_.cell)));
+    grid_.ny        = std::max(1, int(std::ceil(span.y() / grid_.cell)));
+    grid_.pieces.assign(std::size_t(grid_.nx) * grid_.ny, {});
+    for (std::size_t p = 0; p < mesh.pieces.size(); ++p)
+      {
+        if (!surface_piece_[p])
+          continue;
+        const auto index = [&](double x, double o, int m) {
+          return std::clamp(int(std::floor((x - o) / grid_.cell)), 0, m - 1);
+        };
+        const auto &[blo, bhi] = piece_box_[p];
+        for (int j = index(blo.y(), lo.y(), grid_.ny); j <= index(bhi.y(), lo.y(), grid_.ny); ++j)
+          for (int i = index(blo.x(), lo.x(), grid_.nx); i <= index(bhi.x(), lo.x(), grid_.nx); ++i)
+            grid_.pieces[std::size_t(j) * grid_.nx + i].push_back(int(p));
+      }
+  }
+
+  void ContactSurface::pieces_near(const Vec2 &q, double reach, std::vector<int> &out) const
+  {
+    out.clear();
+    const auto cell = [&](double x, double o, int n) {
+      return std::clamp(int(std::floor((x - o) / grid_.cell)), 0, n - 1);
+    };
+    const Vec2 lo = q - Vec2(reach, reach), hi = q + Vec2(reach, reach);
+    const Vec2 glo = grid_.origin, ghi = grid_.origin + grid_.cell * Vec2(grid_.nx, grid_.ny);
+    if (grid_.nx == 0 || hi.x() < glo.x() || hi.y() < glo.y() || lo.x() > ghi.x() || lo.y() > ghi.y())
+      return;
+    const int i0 = cell(lo.x(), glo.x(), grid_.nx), i1 = cell(hi.x(), glo.x(), grid_.nx);
+    const int j0 = cell(lo.y(), glo.y(), grid_.ny), j1 = cell(hi.y(), glo.y(), grid_.ny);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        {
+          const auto &c = grid_.pieces[std::size_t(j) * grid_.nx + i];
+          out.insert(out.end(), c.begin(), c.end());
+        }
+    if (i0 != i1 || j0 != j1)
+      {
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+      }
+  }
+
+  double ContactSurface::distance_bound(int p, const Vec2 &q) const
+  {
+    const auto &samples = piece_samples_[p];
+    double d            = 1e300;
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i)
+      d = std::min(d, segment_distance(q, samples[i], samples[i + 1]));
+    return d - piece_sag_[p];
   }
 
   Vec2 ContactSurface::outward_normal(int piece, double t) const
@@ -196,28 +278,61 @@ namespace gearfem::contact
                                      const std::vector<bool> &use_piece) const
   {
     const auto &pieces = body_->mesh().pieces;
-    Projection best;
-    double best_d = 1e300;
-    bool best_interior = false;
-    for (std::size_t p = 0; p < pieces.size(); ++p)
+    // Distances within `tie` are equal; the choice among the pieces nearest to q is made
+    // in piece order below, and only those pieces take part in it.
+    const auto tie = [](double d) { return 1e-12 + 1e-9 * d; };
+    // Pieces in reach by their lower bound; the exact distance first on the one with the
+    // least bound: every piece whose bound exceeds that distance by more than a few ties is
+    // farther than the nearest and cannot take part in the choice (nor change it).
+    std::vector<std::pair<int, double>> reach;
+    int first = -1;
+    thread_local std::vector<int> near;
+    pieces_near(q, max_distance, near);
+    for (const int p : near)
       {
-        if (!surface_piece_[p] || (!use_piece.empty() && !use_piece[p]))
+        if (!use_piece.empty() && !use_piece[p])
           continue;
         if (box_distance(q, piece_box_[p][0], piece_box_[p][1]) > max_distance)
           continue;
+        const double lb = distance_bound(p, q);
+        if (lb > max_distance + 10 * tie(max_distance))
+          continue;
+        if (first < 0 || lb < reach[first].second)
+          first = int(reach.size());
+        reach.emplace_back(p, lb);
+      }
+    const auto closest = [&](int p, double &t, Vec2 &x) {
+      const auto &pc  = pieces[p];
+      const double lo = std::min(pc.t0, pc.t1), hi = std::max(pc.t0, pc.t1);
+      t               = pc.curve.closest_parameter(q, lo, hi, piece_samples_[p]);
+      x               = pc.curve.point(t);
+      return (q - x).norm();
+    };
+    double t_first = 0, d_first = 1e300;
+    Vec2 x_first;
+    if (first >= 0)
+      d_first = closest(reach[first].first, t_first, x_first);
+    Projection best;
+    double best_d = 1e300;
+    bool best_interior = false;
+    for (std::size_t r = 0; r < reach.size(); ++r)
+      {
+        const int p = reach[r].first;
+        if (reach[r].second > d_first + 10 * tie(d_first))
+          continue;
+        double t = t_first, d = d_first;
+        Vec2 x   = x_first;
+        if (int(r) != first)
+          d = closest(p, t, x);
         const auto &pc  = pieces[p];
         const double lo = std::min(pc.t0, pc.t1), hi = std::max(pc.t0, pc.t1);
-        const double t  = pc.curve.closest_parameter(q, lo, hi);
-        const Vec2 x    = pc.curve.point(t);
-        const double d  = (q - x).norm();
         const double eps = 1e-9 * (hi - lo);
         const bool interior = t > lo + eps && t < hi - eps;
         // Prefer an interior projection at (numerically) equal distance.
-        const double tie = 1e-12 + 1e-9 * d;
-        if (d < best_d - tie || (std::abs(d - best_d) <= tie && interior && !best_interior))
+        if (d < best_d - tie(d) || (std::abs(d - best_d) <= tie(d) && interior && !best_interior))
           {
             best_d = d, best_interior = interior;
-            best.piece = int(p), best.t = t, best.point = x;
+            best.piece = p, best.t = t, best.point = x;
           }
       }
     if (best.piece < 0 || best_d > max_distance)
@@ -234,14 +349,17 @@ namespace gearfem::contact
     const double scale = 1e-9 * std::max(1e-3, best.point.norm());
     Vec2 n_other       = best.normal;
     bool found         = false;
-    for (std::size_t p = 0; p < pieces.size() && !found; ++p)
+    pieces_near(best.point, scale, near);
+    for (const int p : near)
       {
-        if (!surface_piece_[p] || int(p) == best.piece)
+        if (found)
+          break;
+        if (p == best.piece)
           continue;
         for (const double t : {pieces[p].t0, pieces[p].t1})
           if ((pieces[p].curve.point(t) - best.point).norm() < scale)
             {
-              n_other = outward_normal(int(p), t);
+              n_other = outward_normal(p, t);
               found   = true;
               break;
             }

@@ -99,5 +99,23 @@ namespace gearfem::contact
     std::vector<std::vector<int>> piece_faces_; ///< per mesh piece, faces sorted by t_lo
     std::vector<std::array<Vec2, 2>> piece_box_; ///< per mesh piece: lo, hi
     std::vector<bool> surface_piece_;
+    /// Per surface piece: the sampled start of the closest-point search
+    /// (ParametricCurve::closest_samples + 1 points, the polyline of the lower bound), and
+    /// a bound on how far the curve strays from that polyline [m].
+    std::vector<std::vector<Vec2>> piece_samples_;
+    std::vector<double> piece_sag_;
+    /// A lower bound on the distance from q to surface piece p: polyline minus sag [m].
+    double distance_bound(int p, const Vec2 &q) const;
+    /// A uniform grid over the surface pieces' boxes: per cell, the surface pieces whose box
+    /// meets it (ascending), so that a projection looks only at the pieces near q.
+    struct PieceGrid
+    {
+      Vec2 origin = Vec2::Zero();
+      double cell = 1;
+      int nx = 0, ny = 0;
+      std::vector<std::vector<int>> pieces;
+    } grid_;
+    /// The surface pieces (ascending) whose box may lie within `reach` of q.
+    void pieces_near(const Vec2 &q, double reach, std::vector<int> &out) const;
   };
 } // namespace gearfem::contact

@@ -27,9 +27,8 @@ namespace gearfem::geometry
     {
       double s, s1, s2;
     };
-    Displacement displacement(const Curve &rack, double t)
+    Displacement displacement(const Vec2 &P, const Vec2 &P1, const Vec2 &P2, const Vec2 &P3)
     {
-      const Vec2   P = rack.point(t), P1 = rack.d1(t), P2 = rack.d2(t), P3 = rack.d3(t);
       const double u1 = P1.x(), u2 = P2.x(), u3 = P3.x();
       const double f  = P.dot(P1);
       const double f1 = P1.squaredNorm() + P.dot(P2);
@@ -38,6 +37,10 @@ namespace gearfem::geometry
       const double N1 = f2 * u1 - f * u3;
       const double D = u1 * u1, D1 = 2.0 * u1 * u2;
       return {-f / u1, -N / D, -(N1 * D - N * D1) / (D * D)};
+    }
+    Displacement displacement(const Curve &rack, double t)
+    {
+      return displacement(rack.point(t), rack.d1(t), rack.d2(t), rack.d3(t));
     }
   } // namespace
 
@@ -84,6 +87,21 @@ namespace gearfem::geometry
     const Vec2   Q1(P1.x() + D.s1, P1.y()), Q2(P2.x() + D.s2, P2.y());
     const double th1 = D.s1 / r0_, th2 = D.s2 / r0_;
     return rot(D.s / r0_) * (Q2 + 2.0 * th1 * perp(Q1) + th2 * perp(Q) - th1 * th1 * Q);
+  }
+
+  void ConjugateCurve::evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const
+  {
+    // point, d1 and d2 above from one evaluation of the rack (the same expressions).
+    Vec2 P, P1, P2;
+    rack_->evaluate(t, P, P1, P2);
+    const auto         D = displacement(P, P1, P2, rack_->d3(t));
+    const Vec2         Q(P.x() + D.s, r0_ + P.y());
+    const Vec2         Q1(P1.x() + D.s1, P1.y()), Q2(P2.x() + D.s2, P2.y());
+    const double       th1 = D.s1 / r0_, th2 = D.s2 / r0_;
+    const Eigen::Matrix2d R = rot(D.s / r0_);
+    p  = R * Q;
+    p1 = R * (Q1 + th1 * perp(Q));
+    p2 = R * (Q2 + 2.0 * th1 * perp(Q1) + th2 * perp(Q) - th1 * th1 * Q);
   }
 
   // ------------------------------------------------------------------ inverse

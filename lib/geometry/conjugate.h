@@ -20,6 +20,7 @@ namespace gearfem::geometry
     Vec2 point(double t) const override;
     Vec2 d1(double t) const override;
     Vec2 d2(double t) const override;
+    void evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const override;
     /// Rack displacement K(t) at which rack point t is in contact [m].
     double rack_displacement(double t) const;
     /// Contact point in the fixed frame (path of contact) for rack parameter t.

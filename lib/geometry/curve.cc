@@ -26,6 +26,11 @@ namespace gearfem::geometry
     return (d2(b) - d2(a)) / (b - a);
   }
 
+  void Curve::evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const
+  {
+    p = point(t), p1 = d1(t), p2 = d2(t);
+  }
+
   double Curve::curvature(double t) const
   {
     const Vec2   p1 = d1(t), p2 = d2(t);
@@ -227,6 +232,12 @@ namespace gearfem::geometry
   Vec2   AffineCurve::d1(double t) const { return sigma_ * (M_ * base_->d1(sigma_ * t)); }
   Vec2   AffineCurve::d2(double t) const { return M_ * base_->d2(sigma_ * t); }
   Vec2   AffineCurve::d3(double t) const { return sigma_ * (M_ * base_->d3(sigma_ * t)); }
+  void   AffineCurve::evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const
+  {
+    Vec2 q, q1, q2;
+    base_->evaluate(sigma_ * t, q, q1, q2);
+    p = M_ * q + b_, p1 = sigma_ * (M_ * q1), p2 = M_ * q2;
+  }
 
   // ---------------------------------------------------------------- TrimmedCurve
   TrimmedCurve::TrimmedCurve(CurvePtr base, double a, double b)

@@ -23,6 +23,9 @@ namespace gearfem::geometry
     virtual Vec2 d2(double t) const = 0;
     /// Third derivative; default by central difference of d2 (exact in overrides).
     virtual Vec2 d3(double t) const;
+    /// point, d1 and d2 at t in one call: the same values as the three calls (overrides
+    /// share the work the three have in common; the closest-point Newton needs all three).
+    virtual void evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const;
 
     /// Signed curvature (x'y'' - y'x'')/|p'|^3; positive when the curve turns left
     /// (counter-clockwise) as t grows. Units 1/m.
@@ -122,6 +125,7 @@ namespace gearfem::geometry
     Vec2 d1(double t) const override;
     Vec2 d2(double t) const override;
     Vec2 d3(double t) const override;
+    void evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const override;
     /// The base-curve parameter of curve parameter t.
     double base_parameter(double t) const { return sigma_ * t; }
     const CurvePtr &base() const { return base_; }
@@ -146,6 +150,7 @@ namespace gearfem::geometry
     Vec2 d1(double t) const override { return base_->d1(t); }
     Vec2 d2(double t) const override { return base_->d2(t); }
     Vec2 d3(double t) const override { return base_->d3(t); }
+    void evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const override { base_->evaluate(t, p, p1, p2); }
 
   private:
     CurvePtr base_;

@@ -49,9 +49,11 @@ namespace gearfem::mesh
     /// Safeguarded Newton on f(t) = (p(t) - q) . p'(t) = 0 from t in the bracket [a, b].
     double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b)
     {
+      Vec2 x, p1, p2;
       for (int it = 0; it < 50; ++it)
         {
-          const Vec2 r = c.point(t) - q, p1 = c.d1(t), p2 = c.d2(t);
+          c.evaluate(t, x, p1, p2);
+          const Vec2 r   = x - q;
           const double f = r.dot(p1), df = p1.squaredNorm() + r.dot(p2);
           // Keep a bracket [a, b] for safeguarding (f is increasing through the minimum).
           if (f > 0)
@@ -72,18 +74,33 @@ namespace gearfem::mesh
     }
   } // namespace
 
+  void ParametricCurve::evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const
+  {
+    if (all)
+      all(t, p, p1, p2);
+    else
+      p = point(t), p1 = d1(t), p2 = d2(t);
+  }
+
   double ParametricCurve::closest_parameter(const Vec2 &q, double lo, double hi) const
   {
     if (lo > hi)
       std::swap(lo, hi);
-    const int n  = 32;
+    std::vector<Vec2> samples(closest_samples + 1);
+    for (int i = 0; i <= closest_samples; ++i)
+      samples[i] = point(lo + (hi - lo) * i / closest_samples);
+    return closest_parameter(q, lo, hi, samples);
+  }
+
+  double ParametricCurve::closest_parameter(const Vec2 &q, double lo, double hi, const std::vector<Vec2> &samples) const
+  {
+    const int n  = closest_samples;
     double best  = lo, best_d = 1e300;
     for (int i = 0; i <= n; ++i)
       {
-        const double t = lo + (hi - lo) * i / n;
-        const double d = (point(t) - q).squaredNorm();
+        const double d = (samples[i] - q).squaredNorm();
         if (d < best_d)
-          best_d = d, best = t;
+          best_d = d, best = lo + (hi - lo) * i / n;
       }
     const double dt = (hi - lo) / n;
     return newton_closest(*this, q, lo, hi, best, std::max(lo, best - dt), std::min(hi, best + dt));
@@ -93,9 +110,13 @@ namespace gearfem::mesh
   {
     if (lo > hi)
       std::swap(lo, hi);
-    const double dt = (hi - lo) / 32;
+    const double dt = (hi - lo) / closest_samples;
     const double a = std::max(lo, t0 - dt), b = std::min(hi, t0 + dt);
-    const auto f = [&](double t) { return (point(t) - q).dot(d1(t)); };
+    const auto f = [&](double t) {
+      Vec2 x, p1, p2;
+      evaluate(t, x, p1, p2);
+      return (x - q).dot(p1);
+    };
     // The minimum must lie strictly inside the bracket: f < 0 at a, f > 0 at b.
     ok = a > lo && b < hi && f(a) < 0 && f(b) > 0;
     if (!ok)
@@ -111,6 +132,10 @@ namespace gearfem::mesh
     pc.point = [curve, rot](double t) { return rot(curve->point(t)); };
     pc.d1    = [curve, rot](double t) { return rot(curve->d1(t)); };
     pc.d2    = [curve, rot](double t) { return rot(curve->d2(t)); };
+    pc.all   = [curve, rot](double t, Vec2 &p, Vec2 &p1, Vec2 &p2) {
+      curve->evaluate(t, p, p1, p2);
+      p = rot(p), p1 = rot(p1), p2 = rot(p2);
+    };
     return pc;
   }
 

@@ -60,9 +60,18 @@ namespace gearfem::mesh
   struct ParametricCurve
   {
     std::function<Vec2(double)> point, d1, d2;
+    /// point, d1 and d2 in one call where the curve shares their work (may be empty).
+    std::function<void(double, Vec2 &, Vec2 &, Vec2 &)> all;
+    /// point, d1 and d2 at t (through `all` when set: the same values).
+    void evaluate(double t, Vec2 &p, Vec2 &p1, Vec2 &p2) const;
     /// Parameter in [lo, hi] of the point closest to q: sampling followed by safeguarded
     /// Newton on (p(t) - q)·p'(t) = 0.
     double closest_parameter(const Vec2 &q, double lo, double hi) const;
+    /// The same with the samples given: `samples` holds point(lo + (hi - lo) i / n) for
+    /// i = 0..n, n = closest_samples (lo <= hi), e.g. kept by a caller that projects often.
+    double closest_parameter(const Vec2 &q, double lo, double hi, const std::vector<Vec2> &samples) const;
+    /// The number of intervals of the sampled start of closest_parameter.
+    static constexpr int closest_samples = 32;
     /// The same from a start t0 near the answer (a previous projection): safeguarded Newton
     /// in the bracket t0 -/+ (hi - lo)/32, without the sampling. `ok` false (and the result
     /// meaningless) when the bracket does not hold the minimum: call closest_parameter.
