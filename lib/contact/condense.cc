@@ -20,18 +20,15 @@ namespace gearfem::contact
       throw InputError("Contact/Friction coefficient", to_string_g(options_.friction),
                        "0 for a condensed cycle", "the condensed cycle stores the frictionless operator");
     const double q = solution.q;
-    // The elastic state of the solution, from its nodal forces.
-    for (int b = 1; b <= 2; ++b)
-      {
-        auto &c = cache_[b - 1];
-        std::vector<int> idx;
-        for (const auto &[d, f] : solution.forces[b - 1])
-          idx.push_back(c.index[d]);
-        compute_columns(b, idx);
-        c.u.setZero();
-        for (const auto &[d, f] : solution.forces[b - 1])
-          c.u += f * c.flex->C.col(c.index[d]);
-      }
+    // The elastic state of the solution, from its nodal forces, on a zone with twice the
+    // solve's margin (the searches at q -/+ h below stay inside it).
+    set_zone(scene, q, 2 * options_.search_distance);
+    std::vector<std::pair<int, double>> forces[2];
+    for (int b = 0; b < 2; ++b)
+      for (const auto &[d, f] : solution.forces[b])
+        forces[b].emplace_back(cache_[b].index[d], f);
+    double t_columns = 0;
+    set_displacements(forces, t_columns);
     std::vector<double> lambda_node(s1_->nodes().size() + s2_->nodes().size(), 0.0);
     for (const auto &p : solution.points)
       lambda_node[key(p.slave_body, p.node)] = p.force;
@@ -62,6 +59,8 @@ namespace gearfem::contact
       g_plus[key(c.S, c.node)] = c.g;
     for (const auto &c : search(scene, q - h).cand)
       g_minus[key(c.S, c.node)] = c.g;
+    if (zone_breach_)
+      throw SolverError("condense: a projection reads the elastic state outside the contact zone");
     for (int k = 0; k < m; ++k)
       {
         const int kk = key(sr.cand[k].S, sr.cand[k].node);

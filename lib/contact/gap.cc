@@ -93,6 +93,9 @@ namespace gearfem::contact
     if (hint_key >= 0)
       hints_[hint_key] = out.pr;
     out.face      = ms.face_at(out.pr.piece, out.pr.t, out.shape);
+    for (const int n : ms.faces()[out.face].nodes)
+      if (!cache_[M - 1].node_zone[n])
+        zone_breach_ = true;
     const Vec2 um = interpolate(M, out.face, out.shape);
     out.g         = (y - out.pr.point - um).dot(out.pr.normal) + slave_offset + gap_offset(M, out.pr.point);
     if (std::abs(out.g) > options_.search_distance)
@@ -133,6 +136,9 @@ namespace gearfem::contact
               const double x = face.xi[l] + sm.eta * (face.xi[l + 1] - face.xi[l]);
               const double t = face.t_lo + x * (face.t_hi - face.t_lo);
               sm.slave_face  = ss.face_at(face.piece, t, sm.slave_shape);
+              for (const int n : ss.faces()[sm.slave_face].nodes)
+                if (!cS.node_zone[n])
+                  zone_breach_ = true;
               sm.ds = pc.curve.d1(t).norm() * (face.t_hi - face.t_lo) * (face.xi[l + 1] - face.xi[l]) * gw[k];
               sm.gp.x       = pc.curve.point(t);
               const Vec2 us = interpolate(S, sm.slave_face, sm.slave_shape);
@@ -188,6 +194,8 @@ namespace gearfem::contact
                                        std::vector<int>(s2_->faces().size(), -1)};
     for (const auto &[S, i] : slaves(scene))
       {
+        if (!cache_[S - 1].node_zone[i])
+          continue; // beyond the search distance by the zone's margin
         const auto &nd = surface(S).nodes()[i];
         const Vec2 xs = P[S - 1].apply(nd.x) + P[S - 1].apply_vector(displacement(S, i));
         Candidate c;

@@ -233,6 +233,17 @@ namespace gearfem::contact
       }
   }
 
+  double ContactSurface::distance_lower_bound(const Vec2 &q, double reach) const
+  {
+    thread_local std::vector<int> near;
+    pieces_near(q, reach, near);
+    double d = 2 * reach + 1;
+    for (const int p : near)
+      if (box_distance(q, piece_box_[p][0], piece_box_[p][1]) <= reach)
+        d = std::min(d, distance_bound(p, q));
+    return d;
+  }
+
   double ContactSurface::distance_bound(int p, const Vec2 &q) const
   {
     const auto &samples = piece_samples_[p];

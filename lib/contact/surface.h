@@ -79,6 +79,9 @@ namespace gearfem::contact
     /// and within the hint's bracket; otherwise (a piece end, a jump) the full project().
     Projection project_from(const Vec2 &q, double max_distance, const std::vector<bool> &use_piece,
                             const Projection &hint) const;
+    /// A lower bound on the distance from q (body frame) to the surface; only pieces within
+    /// `reach` of q are looked at (a value above `reach` when there are none) [m].
+    double distance_lower_bound(const Vec2 &q, double reach) const;
     /// Face containing parameter t of `piece` and the shape values of its nodes at t.
     int face_at(int piece, double t, std::vector<double> &shape) const;
     /// Outward unit normal of piece p at parameter t (body frame).

@@ -122,10 +122,17 @@ namespace gearfem::contact
               if (nv.dot(normals.front()) < std::cos(1e-3))
                 c.kink[n] = 1;
           }
-        c.flex    = std::make_shared<Flexibility>();
-        c.flex->C = Eigen::MatrixXd::Zero(c.dofs.size(), c.dofs.size());
-        c.flex->have.assign(c.dofs.size(), 0);
+        c.flex = std::make_shared<Flexibility>();
+        c.flex->reset(c.dofs.size(), 0);
         c.u = Eigen::VectorXd::Zero(c.dofs.size());
+        // Until a configuration sets its zone: the whole surface.
+        c.node_zone.assign(s.nodes().size(), 1);
+        c.zone.resize(c.dofs.size());
+        for (std::size_t i = 0; i < c.dofs.size(); ++i)
+          c.zone[i] = int(i);
+        c.fill_zone = c.zone;
+        for (const auto &nd : s.nodes()) // the body frame's origin is its placement centre
+          c.r_max = std::max(c.r_max, nd.x.norm());
       }
     // The same factorised body with the same surface on both sides (identical gears): the
     // flexibility columns are the same numbers, so both sides share them.
@@ -140,6 +147,9 @@ namespace gearfem::contact
     // start from each other, and a configuration's result does not depend on what was
     // solved before it (a resumed sweep equals an uninterrupted one bit for bit).
     hints_.clear();
+    // The contact zone at the start: the flexibility and the search keep to it.
+    const double q0 = control == Control::displacement ? value : (warm ? warm->q : 0.0);
+    set_zone(scene, q0, options_.search_distance);
     ContactSolution r = solve_once(scene, control, value, warm);
     if (r.converged)
       return r;
@@ -192,35 +202,49 @@ namespace gearfem::contact
     if (control == Control::load && warm && warm->load > 0 && value > 0)
       q = warm->q * (value / warm->load); // secant start along the previous load path
 
-    // Initial elastic state: from the warm start's forces, else unloaded.
-    for (auto &c : cache_)
-      c.u.setZero();
+    // Initial elastic state: from the warm start's forces, else unloaded. `forces`: the
+    // nodal forces (universe index, value) of the current elastic state.
+    std::vector<std::pair<int, double>> forces[2];
     std::vector<double> lambda_node(s1_->nodes().size() + s2_->nodes().size(), 0.0);
     if (warm)
       {
         const double scale = (control == Control::load && warm->load > 0) ? value / warm->load : 1.0;
         for (const auto &p : warm->points)
           lambda_node[key(p.slave_body, p.node)] = p.force * scale;
-        for (int b = 1; b <= 2; ++b)
-          {
-            auto &c = cache_[b - 1];
-            std::vector<int> idx;
-            for (const auto &[d, f] : warm->forces[b - 1])
-              idx.push_back(c.index[d]);
-            ensure_columns(b, idx, out.t_compliance);
-            for (const auto &[d, f] : warm->forces[b - 1])
-              c.u += (f * scale) * c.flex->C.col(c.index[d]);
-          }
+        for (int b = 0; b < 2; ++b)
+          for (const auto &[d, f] : warm->forces[b])
+            forces[b].emplace_back(cache_[b].index[d], f * scale);
       }
+    set_displacements(forces, out.t_compliance);
+    // The zone must cover every node that can come within the search distance: moved
+    // further than its margin, or read outside it (a long face), it is set anew.
+    const auto keep_zone = [&](double at) {
+      for (int k = 0; k < 30 && !zone_holds(at); ++k)
+        {
+          set_zone(scene, at, (zone_breach_ || k > 0 ? 2 : 1) * zone_margin_);
+          set_displacements(forces, out.t_compliance);
+        }
+    };
 
     double prev_q = q;
     SettleTest settle;
     for (int it = 0; it < options_.max_geometry_iterations; ++it)
       {
+        keep_zone(q);
         auto t0 = Clock::now();
-        const SearchResult sr = search(scene, q);
-        const std::vector<Candidate> &cand = sr.cand;
+        SearchResult sr = search(scene, q);
         out.t_search += since(t0);
+        if (zone_breach_)
+          {
+            keep_zone(q);
+            t0 = Clock::now();
+            sr = search(scene, q);
+            out.t_search += since(t0);
+            if (zone_breach_)
+              throw SolverError("contact search: a projection reads the elastic state outside the contact zone "
+                                "after widening it (margin " + to_string_g(zone_margin_ * 1e3) + " mm)");
+          }
+        const std::vector<Candidate> &cand = sr.cand;
         const int m = int(cand.size());
         if (m == 0)
           {
@@ -258,16 +282,16 @@ namespace gearfem::contact
             return out; // not converged: the caller cuts the load
           }
 
-        // New elastic state on the universes.
+        // New elastic state on the zone.
         for (int b = 0; b < 2; ++b)
           {
-            auto &c = cache_[b];
-            c.u.setZero();
+            forces[b].clear();
             for (int k = 0; k < m; ++k)
               if (ncp.lambda[k] != 0)
                 for (const auto &[i, v] : lin.forces(b)[k])
-                  c.u += (ncp.lambda[k] * v) * c.flex->C.col(i);
+                  forces[b].emplace_back(i, ncp.lambda[k] * v);
           }
+        set_displacements(forces, out.t_compliance);
         std::vector<int> active;
         std::vector<double> lambda_new(lambda_node.size(), 0.0);
         for (int k = 0; k < m; ++k)

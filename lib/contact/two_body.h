@@ -269,11 +269,17 @@ namespace gearfem::contact
       /// come with its own (one MUMPS request has a fixed cost of about ten columns).
       std::vector<std::vector<int>> neighbours;
     };
+    /// The flexibility on the universe. A column is computed on the rows of the contact
+    /// zone of its request (and of the observed functionals); later zones add their rows
+    /// to it as they need them: a selected-entries request costs by its entries, and most
+    /// of the universe lies far from the contact of any one position.
     struct Flexibility
     {
-      Eigen::MatrixXd C;      ///< columns of K^-1 on the surface DoFs [m/N]
+      Eigen::MatrixXd C;      ///< columns of K^-1 on the surface DoFs [m/N], on their filled rows
       Eigen::MatrixXd S;      ///< observed functionals of the same columns (observe)
-      std::vector<char> have; ///< column computed (1), queued (2)
+      std::vector<char> have; ///< column computed (1)
+      std::vector<char> filled; ///< entry (i, j) of C computed: filled[j * n + i]
+      void reset(std::size_t n, std::size_t n_observed);
     };
     struct BodyCache
     {
@@ -283,7 +289,18 @@ namespace gearfem::contact
       /// for both bodies when they are the same factorised body with the same surface
       /// (identical gears), so each column is solved once.
       std::shared_ptr<Flexibility> flex;
-      Eigen::VectorXd u;                          ///< current elastic displacement on the universe
+      Eigen::VectorXd u;                          ///< current elastic displacement on the zone's rows
+      /// The contact zone of the configuration (set_zone): per surface node, whether it lies
+      /// within reach of the other body; the universe indices of its DoFs (sorted).
+      std::vector<char> node_zone;
+      std::vector<int> zone;
+      /// A wider zone whose rows a request fills (by twice the search distance more): the
+      /// zone moves with the contact from one position to the next, and a request costs
+      /// about as much as a thousand entries whatever its size.
+      std::vector<int> fill_zone;
+      /// Universe indices that the observed functionals read (sorted): every column fills them.
+      std::vector<int> observed_universe;
+      double r_max = 0; ///< largest distance of a surface node from the body's placement origin [m]
       std::vector<double> node_h;                 ///< longest face chord at each surface node [m]
       std::vector<std::vector<int>> node_faces;   ///< surface faces around each node
       std::vector<char> kink;                     ///< node at a surface end or a normal jump (a corner)
@@ -332,7 +349,21 @@ namespace gearfem::contact
     std::vector<std::pair<int, int>> slaves(const Scene &scene) const;
     /// Index of (body, node) in the per-solve node arrays.
     int key(int body, int node) const { return body == 1 ? node : int(s1_->nodes().size()) + node; }
-    void ensure_columns(int body, const std::vector<int> &universe_indices, double &seconds);
+    /// Make the flexibility columns `universe_indices` of body `body` available on the rows
+    /// of the zone, the observed functionals and `extra_rows` (universe indices): one
+    /// request for what is missing.
+    void ensure_columns(int body, const std::vector<int> &universe_indices, double &seconds,
+                        const std::vector<int> &extra_rows = {});
+    /// The contact zone at drive coordinate q: the surface nodes of each body within the
+    /// search distance plus `margin` (and their face length) of the other body.
+    void set_zone(const Scene &scene, double q, double margin);
+    /// Whether the zone still covers every node that can come within the search distance:
+    /// the drive has moved by less than the margin since set_zone, with four times the
+    /// largest elastic displacement on the zone to spare.
+    bool zone_holds(double q) const;
+    /// u of each body from nodal forces (universe index, value), after making their columns
+    /// available on the zone.
+    void set_displacements(const std::vector<std::pair<int, double>> forces[2], double &seconds);
     Vec2 displacement(int body, int node) const;
     Vec2 interpolate(int body, int face, const std::vector<double> &shape) const;
     /// Rigid-body velocity of body `body` at pair-frame point x per unit drive rate.
@@ -351,5 +382,8 @@ namespace gearfem::contact
     /// start of the next one within one configuration (cleared by solve(); search is const:
     /// a cache, not state; every projection is exact to the Newton tolerance).
     mutable std::unordered_map<long long, Projection> hints_;
+    double zone_q_ = 0, zone_margin_ = 0;
+    /// A projection landed on a master face with a node outside the zone (search is const).
+    mutable bool zone_breach_ = false;
   };
 } // namespace gearfem::contact

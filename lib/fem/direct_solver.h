@@ -44,14 +44,15 @@ namespace gearfem::fem
     /// (overwritten by the solutions). MUMPS solves the block in one call (KSPMatSolve),
     /// UMFPACK column by column.
     void solve_block(std::vector<double> &columns, unsigned int k) const;
-    /// Selected entries of A^{-1}: E(i, j) = (A^{-1})(rows[i], cols[j]), column-major
-    /// rows.size() x cols.size(). MUMPS computes them with its sparse right-hand sides and
-    /// selected-entries solve (ICNTL(30), through MatMumpsGetInverseTranspose), which prunes
-    /// the elimination tree to the paths of the requested rows and columns: much cheaper
-    /// than full solves when the rows are a small part of the body (the contact surface).
-    /// UMFPACK falls back to full solves.
-    std::vector<double> inverse_entries(const std::vector<unsigned int> &rows,
-                                        const std::vector<unsigned int> &cols) const;
+    /// Selected entries of A^{-1}: for each j, E[j][i] = (A^{-1})(rows[j][i], cols[j]) (each
+    /// column its own rows, none twice). MUMPS computes them with its sparse right-hand
+    /// sides and selected-entries solve (ICNTL(30), through MatMumpsGetInverseTranspose),
+    /// which prunes the elimination tree to the paths of the requested rows and columns:
+    /// much cheaper than full solves when the rows are a small part of the body (the contact
+    /// surface); its cost grows with the number of entries. UMFPACK falls back to full
+    /// solves.
+    std::vector<std::vector<double>> inverse_entries(const std::vector<unsigned int> &cols,
+                                                     const std::vector<std::vector<unsigned int>> &rows) const;
     /// The solver actually used (mumps or umfpack).
     SolverKind kind() const { return kind_; }
     bool factorized() const;

@@ -226,18 +226,17 @@ namespace gearfem::fem
     return u;
   }
 
-  std::vector<double> ElasticBody::compliance_columns(const std::vector<unsigned int> &dofs,
-                                                     const std::vector<unsigned int> &rows) const
+  std::vector<std::vector<double>> ElasticBody::compliance_columns(
+    const std::vector<unsigned int> &dofs, const std::vector<std::vector<unsigned int>> &rows) const
   {
-    const std::size_t k = dofs.size();
-    std::vector<double> out = solver_.inverse_entries(rows, dofs);
-    for (std::size_t j = 0; j < k; ++j)
-      for (std::size_t i = 0; i < rows.size(); ++i)
+    std::vector<std::vector<double>> out = solver_.inverse_entries(dofs, rows);
+    for (std::size_t j = 0; j < dofs.size(); ++j)
+      for (std::size_t i = 0; i < rows[j].size(); ++i)
         {
-          double &v = out[j * rows.size() + i];
+          double &v = out[j][i];
           if (!std::isfinite(v))
             throw SolverError("the linear solver returned a non-finite compliance");
-          if (constrained_.at(dofs[j]) || constrained_[rows[i]])
+          if (constrained_.at(dofs[j]) || constrained_[rows[j][i]])
             v = 0.0;
         }
     return out;

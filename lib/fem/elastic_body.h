@@ -135,11 +135,11 @@ namespace gearfem::fem
     dealii::Vector<double> solve(const dealii::Vector<double> &f,
                                  const VectorFunction &g = {}) const;
 
-    /// Flexibility columns: for each DoF d in `dofs`, u = K^{-1} e_d with homogeneous
-    /// Dirichlet data (zero for a constrained d), restricted to the rows `rows`. Returns a
-    /// column-major rows.size() x dofs.size() block [m/N]. One block solve.
-    std::vector<double> compliance_columns(const std::vector<unsigned int> &dofs,
-                                           const std::vector<unsigned int> &rows) const;
+    /// Flexibility columns: for each DoF d = dofs[j], u = K^{-1} e_d with homogeneous
+    /// Dirichlet data (zero for a constrained d), at its own rows `rows[j]` [m/N]. One
+    /// selected-entries request (DirectSolver::inverse_entries).
+    std::vector<std::vector<double>> compliance_columns(const std::vector<unsigned int> &dofs,
+                                                        const std::vector<std::vector<unsigned int>> &rows) const;
     /// Reaction force vector r = K u - f [N] (nonzero on constrained DoFs only).
     dealii::Vector<double> reactions(const dealii::Vector<double> &u,
                                      const dealii::Vector<double> &f) const;

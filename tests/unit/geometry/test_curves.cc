@@ -130,3 +130,30 @@ TEST(Curves, ParameterAtRadiusClosedForm)
       EXPECT_NE(std::string(e.what()).find("does not bracket"), std::string::npos) << e.what();
     }
 }
+
+// evaluate() (point and both derivatives in one pass, used by the closest-point Newton)
+// gives the values of point(), d1() and d2(): the conjugate of a straight rack flank and of
+// a rack tip round (the trochoid), and their mirrored, reversed copies.
+TEST(Conjugate, EvaluateEqualsThePointAndDerivativeCalls)
+{
+  const double r0   = 0.075;
+  const auto flank  = std::make_shared<LineSegment>(Vec2(-0.0021, -0.00375), Vec2(0.0011, 0.0030));
+  const auto round  = std::make_shared<CircularArc>(Vec2(-0.0025, -0.0030), 0.00075, -2.9, -1.6);
+  for (const CurvePtr rack : {CurvePtr(flank), CurvePtr(round)})
+    {
+      const auto conj = std::make_shared<ConjugateCurve>(rack, r0);
+      Eigen::Matrix2d M;
+      M << -0.6, 0.8, 0.8, 0.6; // a reflection
+      const AffineCurve copy(conj, M, Vec2(0.001, -0.002), true);
+      for (const Curve *c : {static_cast<const Curve *>(conj.get()), static_cast<const Curve *>(&copy)})
+        for (int i = 0; i <= 10; ++i)
+          {
+            const double t = c->t_begin() + (c->t_end() - c->t_begin()) * (0.02 + 0.096 * i);
+            Vec2 p, p1, p2;
+            c->evaluate(t, p, p1, p2);
+            const Vec2 e[3] = {c->point(t), c->d1(t), c->d2(t)}, g[3] = {p, p1, p2};
+            for (int k = 0; k < 3; ++k)
+              EXPECT_LE((g[k] - e[k]).norm(), 4e-16 * e[k].norm()) << "t " << t << ", derivative " << k;
+          }
+    }
+}
