@@ -150,6 +150,12 @@ namespace gearfem::contact
     for (auto &pf : piece_faces_)
       std::sort(pf.begin(), pf.end(), [&](int a, int b) { return faces_[a].t_lo < faces_[b].t_lo; });
 
+    index_pieces();
+  }
+
+  void ContactSurface::index_pieces()
+  {
+    const auto &mesh = body_->mesh();
     piece_box_.assign(mesh.pieces.size(), {Vec2(0, 0), Vec2(0, 0)});
     piece_samples_.assign(mesh.pieces.size(), {});
     piece_sag_.assign(mesh.pieces.size(), 0.0);

@@ -118,6 +118,8 @@ namespace gearfem::contact
       int nx = 0, ny = 0;
       std::vector<std::vector<int>> pieces;
     } grid_;
+    /// Boxes, samples, sags and the grid of the surface pieces (end of the constructor).
+    void index_pieces();
     /// The surface pieces (ascending) whose box may lie within `reach` of q.
     void pieces_near(const Vec2 &q, double reach, std::vector<int> &out) const;
   };
