@@ -32,6 +32,12 @@ namespace gearfem::contact
       const double s  = l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
       return (q - a - s * ab).norm();
     }
+    /// Index along one axis of the grid cell of coordinate x (origin o, cell size h, n
+    /// cells), clamped into the grid.
+    int grid_cell(double x, double o, double h, int n)
+    {
+      return std::clamp(int(std::floor((x - o) / h)), 0, n - 1);
+    }
     double box_distance(const Vec2 &q, const Vec2 &lo, const Vec2 &hi)
     {
       const double dx = std::max({lo.x() - q.x(), 0.0, q.x() - hi.x()});
@@ -204,9 +210,7 @@ namespace gearfem::contact
       {
         if (!surface_piece_[p])
           continue;
-        const auto index = [&](double x, double o, int m) {
-          return std::clamp(int(std::floor((x - o) / grid_.cell)), 0, m - 1);
-        };
+        const auto index       = [&](double x, double o, int m) { return grid_cell(x, o, grid_.cell, m); };
         const auto &[blo, bhi] = piece_box_[p];
         for (int j = index(blo.y(), lo.y(), grid_.ny); j <= index(bhi.y(), lo.y(), grid_.ny); ++j)
           for (int i = index(blo.x(), lo.x(), grid_.nx); i <= index(bhi.x(), lo.x(), grid_.nx); ++i)
@@ -217,9 +221,7 @@ namespace gearfem::contact
   void ContactSurface::pieces_near(const Vec2 &q, double reach, std::vector<int> &out) const
   {
     out.clear();
-    const auto cell = [&](double x, double o, int n) {
-      return std::clamp(int(std::floor((x - o) / grid_.cell)), 0, n - 1);
-    };
+    const auto cell = [&](double x, double o, int n) { return grid_cell(x, o, grid_.cell, n); };
     const Vec2 lo = q - Vec2(reach, reach), hi = q + Vec2(reach, reach);
     const Vec2 glo = grid_.origin, ghi = grid_.origin + grid_.cell * Vec2(grid_.nx, grid_.ny);
     if (grid_.nx == 0 || hi.x() < glo.x() || hi.y() < glo.y() || lo.x() > ghi.x() || lo.y() > ghi.y())
@@ -301,7 +303,8 @@ namespace gearfem::contact
     // Pieces in reach by their lower bound; the exact distance first on the one with the
     // least bound: every piece whose bound exceeds that distance by more than a few ties is
     // farther than the nearest and cannot take part in the choice (nor change it).
-    std::vector<std::pair<int, double>> reach;
+    thread_local std::vector<std::pair<int, double>> reach; // per call; kept to spare the allocation
+    reach.clear();
     int first = -1;
     thread_local std::vector<int> near;
     pieces_near(q, max_distance, near);
