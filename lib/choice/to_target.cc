@@ -130,6 +130,10 @@ namespace gearfem::choice
       l.h_fillet      = sizes.mesh[0].h_fillet;
       l.seconds_setup = since(t0);
       l.dofs          = model->n_dofs();
+      // Root stresses and reactions from influence coefficients, as the sweep takes them: no
+      // displacement field per sample, and the columns the samples compute stay cached for
+      // the sweep of the delivered level.
+      model->observe_root_stress();
       l.subdivided    = model->body(1).mesh().subdivided || model->body(2).mesh().subdivided;
       const auto t1   = Clock::now();
       Progress progress(options.out, o.positions.size() * o.torques.size(), "model-choice sample");
