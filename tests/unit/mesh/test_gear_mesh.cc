@@ -37,6 +37,34 @@ namespace
         ++n[f->boundary_id()];
     return n;
   }
+
+  /// The gear meshed by tiles (mesh_gear_tiled); empty with the reason in `why` when refused.
+  mesh::MeshData mesh_tiled(const geometry::ToothProfile &tooth, mesh::GearMeshParameters p, std::string &why)
+  {
+    p.tiled = true;
+    mesh::MeshingOptions o;
+    o.samples_per_piece = p.spline_samples;
+    return mesh::mesh_gear_tiled(tooth, p, o, &why);
+  }
+
+  /// Conformity: every cell edge is shared by two cells or is a boundary edge, and every
+  /// boundary edge belongs to one cell only (closed cuts, no hanging or doubled vertex).
+  void expect_conforming(const mesh::MeshData &m)
+  {
+    std::map<std::pair<unsigned, unsigned>, int> edges;
+    for (const auto &c : m.cells)
+      for (const auto &[a, b] : {std::pair{c[0], c[1]}, {c[1], c[3]}, {c[3], c[2]}, {c[2], c[0]}})
+        ++edges[{std::min(a, b), std::max(a, b)}];
+    std::size_t once = 0;
+    for (const auto &[e, n] : edges)
+      {
+        EXPECT_LE(n, 2);
+        once += n == 1;
+      }
+    EXPECT_EQ(once, m.boundary_edges.size());
+    for (const auto &e : m.boundary_edges)
+      EXPECT_EQ(edges.at({std::min(e.v0, e.v1), std::max(e.v0, e.v1)}), 1);
+  }
 } // namespace
 
 // Reference: the exact outline of the geometry module (each boundary vertex must lie on
@@ -274,24 +302,11 @@ TEST(GearMesh, TilesJoinDespiteGmshRoundingOnTheCuts)
   mesh::GearMeshParameters p;
   p.h_contact = 2.5e-3 / 30;
   p.h_fillet  = 2.5e-3 / 12;
-  p.tiled     = true;
   std::string why;
-  mesh::MeshingOptions o;
-  o.samples_per_piece = p.spline_samples;
-  const auto tiled    = mesh::mesh_gear_tiled(tooth, p, o, &why);
+  const auto tiled = mesh_tiled(tooth, p, why);
   ASSERT_FALSE(tiled.cells.empty()) << why;
   EXPECT_EQ(mesh::quality(tiled).n_inverted, 0u);
-  std::map<std::pair<unsigned, unsigned>, int> edges;
-  for (const auto &c : tiled.cells)
-    for (const auto &[a, b] : {std::pair{c[0], c[1]}, {c[1], c[3]}, {c[3], c[2]}, {c[2], c[0]}})
-      ++edges[{std::min(a, b), std::max(a, b)}];
-  std::size_t once = 0;
-  for (const auto &[e, n] : edges)
-    {
-      EXPECT_LE(n, 2);
-      once += n == 1;
-    }
-  EXPECT_EQ(once, tiled.boundary_edges.size());
+  expect_conforming(tiled);
 }
 
 // A full gear meshed by tiles (Mesh/Tiled teeth). References: the same gear meshed whole
@@ -307,11 +322,8 @@ TEST(GearMesh, TiledTeethJoinIntoTheWholeGear)
   p.h_contact      = 0.15e-3;
   p.h_fillet       = 0.25e-3;
   const auto whole = mesh::mesh_gear(tooth, p);
-  p.tiled = true;
   std::string why;
-  mesh::MeshingOptions o;
-  o.samples_per_piece = p.spline_samples;
-  const auto tiled    = mesh::mesh_gear_tiled(tooth, p, o, &why);
+  const auto tiled = mesh_tiled(tooth, p, why);
   ASSERT_FALSE(tiled.cells.empty()) << why;
   const auto q     = mesh::quality(tiled);
   EXPECT_FALSE(tiled.subdivided);
@@ -319,19 +331,7 @@ TEST(GearMesh, TiledTeethJoinIntoTheWholeGear)
   EXPECT_GT(q.min_angle, 25.0); // the whole gear: 27.5-158.5 deg on the Parker gear
   EXPECT_LT(q.max_angle, 155.0);
 
-  std::map<std::pair<unsigned, unsigned>, int> edges;
-  for (const auto &c : tiled.cells)
-    for (const auto &[a, b] : {std::pair{c[0], c[1]}, {c[1], c[3]}, {c[3], c[2]}, {c[2], c[0]}})
-      ++edges[{std::min(a, b), std::max(a, b)}];
-  std::size_t once = 0;
-  for (const auto &[e, n] : edges)
-    {
-      EXPECT_LE(n, 2);
-      once += n == 1;
-    }
-  EXPECT_EQ(once, tiled.boundary_edges.size());
-  for (const auto &e : tiled.boundary_edges)
-    EXPECT_EQ(edges.at({std::min(e.v0, e.v1), std::max(e.v0, e.v1)}), 1);
+  expect_conforming(tiled);
 
   auto area = [](const mesh::MeshData &m) {
     double a = 0;
