@@ -259,7 +259,7 @@ namespace gearfem::mesh
     // whole gear is meshed. gmsh places the graded nodes of a cut in the two tiles up to about
     // 1e-9 of the tip radius apart (4e-11 m on the 28-tooth gear of validation/model_choice's
     // random 1 at h_fillet 0.208 mm, which a tolerance of 1e-9 r_tip sent to the whole-gear
-    // mesher: 5.9 s instead of 0.4 s); the join takes one tile's nodes, so a mismatch far below
+    // mesher: 5.9 s instead of 0.5 s); the join takes one tile's nodes, so a mismatch far below
     // any element only moves the other tile's cells by as much.
     const double tol = 1e-7 * tooth.radii().tip;
     for (int j = 0; j < z; ++j)
