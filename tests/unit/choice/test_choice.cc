@@ -177,10 +177,32 @@ TEST(ChoiceEstimate, RichardsonIsExactForOrderTwo)
     EXPECT_NEAR(e[0], mean, 1e-9 * mean);
     EXPECT_NEAR(e[1], pp, 1e-9 * pp);
   }
+  // With cycle weights, the mean STE's error is that of the weighted mean of the zone middles:
+  // (0.6 x 0.5 + 0.4 x 0.7) h^2 over (0.6 Q_0 + 0.4 Q_2); the p-p is unchanged.
+  {
+    const auto e = choice::estimate_relative(a, level(2 * h), 4, 2, 2, 2, nullptr, choice::zone_samples, {0.6, 0.4});
+    double mean = 0;
+    for (int t = 0; t < 2; ++t)
+      mean = std::max(mean, (0.6 * 0.5 + 0.4 * 0.7) * 1e-6 / (0.6 * a[4 * t].ste + 0.4 * a[4 * t + 2].ste));
+    EXPECT_NEAR(e[0], mean, 1e-9 * mean);
+    EXPECT_NEAR(e[1], choice::estimate_relative(a, level(2 * h), 4, 2, 2, 2, nullptr, choice::zone_samples)[1], 1e-15);
+  }
   // A group that did not change has no estimate.
   const auto e = choice::estimate_relative(a, level(2 * h), 4, 1, 2, 2);
   EXPECT_TRUE(std::isnan(e[0]) && std::isnan(e[1]) && std::isnan(e[3]));
   EXPECT_TRUE(std::isfinite(e[2]));
+}
+
+TEST(ChoiceEstimate, ZoneWeightsAreTheShareOfEachZoneInAPitch)
+{
+  // Within one pitch from A, double contact lasts eps_alpha - 1 of it (A to B), single contact
+  // the rest (B to D): the transverse contact ratio of the involute geometry.
+  dealii::ParameterHandler prm;
+  const auto in = parse(test::parker_pair(), prm);
+  const auto w  = choice::zone_weights(*in.pair);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_NEAR(w[0], in.pair->contact_ratio() - 1, 1e-9);
+  EXPECT_NEAR(w[1], 2 - in.pair->contact_ratio(), 1e-9);
 }
 
 TEST(ChoiceParameters, TellSetEntriesFromDefaults)
