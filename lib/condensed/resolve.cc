@@ -4,6 +4,7 @@
 #include "base/progress.h"
 #include "base/units.h"
 #include "fem/elasticity.h"
+#include "fem/stress_peak.h"
 
 #include <chrono>
 #include <cmath>
@@ -81,7 +82,7 @@ namespace gearfem::condensed
       {
         if (fs.tooth != tooth)
           continue;
-        double peak = -1e300, radius = 0;
+        std::vector<double> s1(fs.size());
         for (std::size_t i = 0; i < fs.size(); ++i)
           {
             double s[3] = {0, 0, 0};
@@ -98,11 +99,10 @@ namespace gearfem::condensed
                     s[c] += body.stress(row, j) * v;
                   }
               }
-            const double s1 = fem::principal_stresses(s[0], s[1], s[2])[0];
-            if (s1 > peak)
-              peak = s1, radius = std::hypot(fs.x[i], fs.y[i]);
+            s1[i] = fem::principal_stresses(s[0], s[1], s[2])[0];
           }
-        return {peak, radius};
+        const auto pk = fem::fitted_peak(fs.arc, s1, fem::fillet_samples_per_face);
+        return {pk.value, std::hypot(fs.x.at(pk.index), fs.y.at(pk.index))};
       }
     throw SolverError("condensed re-solve: tooth " + std::to_string(tooth) + " of gear " + std::to_string(b + 1) +
                       " is loaded but the cycle holds no fillet influence for it (not a fine tooth)");

@@ -1,6 +1,7 @@
 // ElasticBody: setup, WorkStream assembly, Dirichlet elimination, solves, reactions and
 // stress recovery.
 #include "fem/elastic_body.h"
+#include "fem/stress_peak.h"
 
 #include "base/errors.h"
 
@@ -488,16 +489,18 @@ namespace gearfem::fem
   {
     const auto samples = boundary_stress(u, id, per_face);
     StressPeak peak;
-    peak.value = -1e300;
+    if (samples.empty())
+      return peak;
+    std::vector<double> arc, s1;
     for (const auto &s : samples)
-      if (s.stress.s1 > peak.value)
-        {
-          peak.value      = s.stress.s1;
-          peak.arc_length = s.arc_length;
-          peak.x          = s.stress.x;
-          peak.radius     = s.stress.x.norm();
-          peak.angle      = std::atan2(s.stress.x[1], s.stress.x[0]);
-        }
+      arc.push_back(s.arc_length), s1.push_back(s.stress.s1);
+    const auto pk   = fitted_peak(arc, s1, per_face);
+    const auto &s   = samples[pk.index];
+    peak.value      = pk.value;
+    peak.arc_length = s.arc_length;
+    peak.x          = s.stress.x;
+    peak.radius     = s.stress.x.norm();
+    peak.angle      = std::atan2(s.stress.x[1], s.stress.x[0]);
     return peak;
   }
 

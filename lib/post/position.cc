@@ -1,5 +1,6 @@
 // Evaluation of one converged contact state into the per-position results, and its VTU.
 #include "post/position.h"
+#include "fem/stress_peak.h"
 
 #include "base/errors.h"
 #include "contact/hertz.h"
@@ -195,15 +196,14 @@ namespace gearfem::post
         {
           if (o.tooth != tooth)
             continue;
-          double peak = -1e300, radius = 0;
+          std::vector<double> s1(o.x.size());
           for (std::size_t k = 0; k < o.x.size(); ++k)
             {
               const Eigen::Index r = o.first_row + Eigen::Index(3 * k);
-              const double s1      = fem::principal_stresses(s[r], s[r + 1], s[r + 2])[0];
-              if (s1 > peak)
-                peak = s1, radius = o.x[k].norm();
+              s1[k]                = fem::principal_stresses(s[r], s[r + 1], s[r + 2])[0];
             }
-          return {peak, radius};
+          const auto pk = fem::fitted_peak(o.arc, s1, fem::fillet_samples_per_face);
+          return {pk.value, o.x.at(pk.index).norm()};
         }
       throw SolverError("root stress: tooth " + std::to_string(tooth) + " of gear " + std::to_string(i) +
                         " is loaded but not observed (not a fine tooth)");

@@ -117,12 +117,18 @@ TEST(ErrorEstimate, AgainstAThirdLevel)
           // Level h/2 of both estimates: the same model and position.
           EXPECT_NEAR(s1.coarse[i], q1, 1e-6 * std::abs(q1)) << names[i] << ", sample " << k;
           EXPECT_LE(s0.relative[i], e0.max_relative[0].second[i]);
-          // Against the third level, above the noise floor 0.05 % of the value.
+          // Against the third level, above the noise floor: 0.05 % of the value; 0.2 % for the
+          // root stresses, whose fitted fillet peak (fem/stress_peak.h) scatters by about
+          // +-0.15 % from one mesh to the next once converged (the Siasos 2010 23/69 pinion
+          // at h_fillet 0.2 / 0.15 / 0.1 / 0.05 mm: +0.04 / +0.02 / -0.12 / -0.13 % against
+          // its reference), while its error at level h here is 0.25-1.7 %.
+          const bool root    = std::string(names[i]).rfind("root_stress", 0) == 0;
+          const double floor = root ? 2e-3 : 5e-4;
           const double truth = q2 - q0, ratio = s0.error[i] / truth;
           std::cout << "sample " << k << " (roll " << s0.phi1 / gearfem::units::deg << " deg) " << names[i] << ": Q h, h/2, h/4 "
                     << q0 << ", " << q1 << ", " << q2 << " (SI); estimate " << s0.error[i] << ", Q_{h/4} - Q_h "
                     << truth << ", ratio " << ratio << "\n";
-          if (std::abs(truth) > 5e-4 * std::abs(q0))
+          if (std::abs(truth) > floor * std::abs(q0))
             {
               ++compared, compared_ste += i == 0;
               EXPECT_GE(ratio, 0.5) << names[i] << ", sample " << k;
