@@ -216,7 +216,8 @@ def main():
                 versus = f"{cheapest[1]} ({cheapest[0]:.1f} s)"
                 c.at_most(f"{t}: auto CPU / CPU of the cheapest fixed rung meeting the target ({cheapest[1]})", ratio,
                           COST_FACTOR, f"auto {auto_cpu:.1f} s, {cheapest[1]} {cheapest[0]:.1f} s: process CPU (user + "
-                          "system) of each whole gearfem solve (three torques), measured alike by study.py; a rung "
+                          "system) of each whole gearfem solve (three torques), measured alike by study.py (the smaller of "
+                          "two runs in a row); a rung "
                           "meets the target when its largest errors over the torques do")
             else:
                 ref_cpu = have["ref"][0]["cpu_s"]
@@ -313,7 +314,8 @@ def main():
              "the true error of a run is, per quantity, the largest over the three torques (p-p STE relative to the "
              "reference's p-p at that torque; root stress: the larger of the pinion's and the gear's error). CPU: "
              "user + system time of the whole `gearfem solve` process (set-up, the sweep at the three torques and, "
-             "for auto, the choice), all runs measured alike in one study on the shared machine. `cheapest fixed`: "
+             "for auto, the choice), all runs measured alike in one study on the shared machine, each the smaller of "
+             "two runs in a row (the references: one). `cheapest fixed`: "
              "the cheapest rung of the fixed ladder (h_contact m/10, m/15, m/30, m/45 with h_fillet 0.25 mm or m/12) "
              "whose largest true errors over the torques meet the target. The demo runs at its single torque "
              f"({DEMO_TORQUE:g} N m), against the Parker reference at that torque.", "",
@@ -326,7 +328,8 @@ def main():
                   f"(Parker reference, {DEMO_TORQUE:g} N m) | estimate mean / p-p / root [%] |",
                   "|---|---|---|---|---|---|"] + demo_rows
     lines += ["", "## Every run", "",
-              "`CPU`: the process (study.py, os.wait4); `set-up CPU`, `sweep CPU`: run.json `cost` "
+              "`CPU`: the process (study.py, os.wait4; the smaller of two runs in a row but for the references); "
+              "`set-up CPU`, `sweep CPU`: run.json `cost` "
               "(cpu_setup_seconds, cpu_sweep_seconds, measured inside gearfem; the sweep covers the three torques). "
               "Errors: the largest over the three torques; per torque in the next table.", "",
               "| pair | run | model | DoFs | CPU [s] | set-up CPU [s] | sweep CPU [s] | wall [s] | mean STE [%] | "

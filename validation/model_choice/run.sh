@@ -15,7 +15,7 @@
 # check.py ends with PASS or FAIL; it writes results/table.md and, after a run of all pairs,
 # the tracked copy table.md here.
 set -euo pipefail
-args_allowed='--reuse|--draw-only'
+args_allowed='--reuse|--draw-only|--repeat=[0-9]+'
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 need "$gearfem"
 export MODEL_CHOICE_PAIRS="${MODEL_CHOICE_PAIRS:-parker,demo,fzg_c,seed001,rand1,rand2}"
