@@ -4,6 +4,7 @@
 
 #include "base/errors.h"
 #include "contact/hertz.h"
+#include "fem/stress_peak.h"
 
 #include <algorithm>
 #include <cmath>
@@ -338,7 +339,9 @@ namespace gearfem::contact
           teeth.insert(((t % z) + z) % z);
         for (const int t : teeth)
           {
-            auto f = bodies_[i - 1]->boundary_stress_functionals(bd::tooth_id(t, bd::fillet_drive));
+            // The samples per face that fem::fitted_peak reads the fillets with.
+            auto f = bodies_[i - 1]->boundary_stress_functionals(bd::tooth_id(t, bd::fillet_drive),
+                                                                  fem::fillet_samples_per_face);
             FilletObservation o;
             o.tooth     = t;
             o.first_row = int(rows.size());
