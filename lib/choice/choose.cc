@@ -23,12 +23,6 @@ namespace gearfem::choice
       o << v * 100 << " %";
       return o.str();
     }
-
-    /// h from a measured (h_ref, error_ref) and order 2: h = h_ref sqrt(tol / error_ref).
-    double order2(double h_ref, double error_ref, double tol)
-    {
-      return h_ref * std::sqrt(tol / error_ref);
-    }
   } // namespace
 
   const std::vector<int> &contact_rungs()
@@ -50,6 +44,17 @@ namespace gearfem::choice
         default:
           return 0;
       }
+  }
+
+  namespace
+  {
+    constexpr double resolution_m6 = 0.0182; ///< fillet_resolution at h_fillet m/6
+    constexpr double resolution_exponent = 1.25;
+  } // namespace
+
+  double fillet_resolution(double h_fillet, double m)
+  {
+    return resolution_m6 * std::pow(6 * h_fillet / m, resolution_exponent);
   }
 
   double snap_finer(double h, double m)
@@ -140,9 +145,13 @@ namespace gearfem::choice
     std::string fdriver = "no root-stress tolerance: m/8";
     if (target.asks(Quantity::root_stress))
       {
-        hf = std::min(m / 12, order2(m / 12, 0.0062, target[Quantity::root_stress]));
-        fdriver = "root stress " + pc(target[Quantity::root_stress]) +
-                  " (measured 0.62 % at about m/12; never coarser, so the fillet keeps at least four elements)";
+        // The size whose resolution is within the tolerance / 1.1 (fillet_resolution).
+        const double tol = target[Quantity::root_stress] / 1.1;
+        hf = std::min(m / 12, m / 6 * std::pow(tol / resolution_m6, 1 / resolution_exponent));
+        fdriver = "root stress " + pc(target[Quantity::root_stress]) + " (resolution " +
+                  pc(fillet_resolution(hf, m)) +
+                  " there, the envelope of the measured errors; never coarser than m/12, so the fillet keeps "
+                  "at least four elements)";
       }
     for (auto &g : c.mesh)
       if (!fixed.h_fillet)

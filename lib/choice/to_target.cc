@@ -263,6 +263,11 @@ namespace gearfem::choice
           for (int q = 0; q < n_quantities; ++q)
             if (!std::isfinite(l.estimate[q]))
               l.estimate[q] = carried[q];
+          // Two levels cannot resolve a root-stress error below the fillet mesh's resolution:
+          // the estimate is never smaller (fillet_resolution).
+          l.fillet_resolution = fillet_resolution(l.h_fillet, m);
+          if (std::isfinite(l.estimate[2]))
+            l.estimate[2] = std::max(l.estimate[2], l.fillet_resolution);
           double worst_c = 0, worst_f = 0;
           for (int q = 0; q < n_quantities; ++q)
             if (target.tolerance[q] > 0)
@@ -295,7 +300,9 @@ namespace gearfem::choice
           // The contact group moves to the rung at or below h / factor.
           const double h_now = cand.mesh[0].h_contact;
           const double fc = worst_c > 0 ? h_now / snap_finer(h_now / refinement(worst_c, options.order), m) : 1;
-          const double ff = worst_f > 0 ? refinement(worst_f, options.order) : 1;
+          // Where the resolution is the estimate, it falls as h^1.25 (fillet_resolution), not h^p.
+          const bool at_resolution = l.estimate[2] <= l.fillet_resolution;
+          const double ff = worst_f > 0 ? refinement(worst_f, at_resolution ? 1.25 : options.order) : 1;
           const double per_position = l.seconds_samples / std::max<std::size_t>(1, l.samples.size());
           const double next = (l.seconds_setup + per_position * sweep_positions) * std::pow(std::max(fc, ff), 1.5);
           if (options.cost_cap > 0 && spent + since(t0) + next > options.cost_cap)
@@ -518,7 +525,9 @@ namespace gearfem::choice
       }
     s << "\nAchieved (estimated relative error of the delivered run: Richardson order " << o.order
       << " against the level before it at (A+B)/2 and (B+D)/2 for the STE, also at B and D for the stresses, "
-         "every torque; the p-p STE with twice the swept mesh ripple) against the target:";
+         "every torque; the p-p STE with twice the swept mesh ripple; the root stress at least the fillet mesh's "
+         "resolution, "
+      << pc(d.fillet_resolution) << ") against the target:";
     for (int q = 0; q < n_quantities; ++q)
       if (o.target.tolerance[q] > 0)
         s << " " << AccuracyTarget::names()[q] << " " << pc(d.estimate[q]) << " / " << pc(o.target.tolerance[q])
@@ -560,6 +569,7 @@ namespace gearfem::choice
           << ", \"remeshed\": " << l.remeshed
           << ", \"setup_seconds\": " << json(l.seconds_setup)
           << ", \"samples_seconds\": " << json(l.seconds_samples) << ", \"estimate\": " << quantities(l.estimate)
+          << ", \"root_stress_resolution\": " << json(l.fillet_resolution)
           << "}";
       }
     s << "\n    ],\n    \"reasons\": [";

@@ -50,6 +50,9 @@ namespace gearfem::choice
     std::array<double, n_quantities> estimate{};
     /// h of the level it was estimated against / h of this level, contact and fillet groups.
     double rho_contact = 1, rho_fillet = 1;
+    /// fillet_resolution of its h_fillet (relative; 0: the companion): the root-stress
+    /// estimate is never below it.
+    double fillet_resolution = 0;
   };
 
   struct TargetOutcome

@@ -153,8 +153,9 @@ def sve_pair(key):
     p = SVE_PAIRS[key]
     return dict(key=key, title=p["title"], geometry=p["geometry"], module=p["module"], teeth=p["teeth"],
                 shift=p["shift"], face_width=p["face_width"], torques=tuple(float(t) for t in p["torques"]),
-                ref_mesh={"h_contact": 0.05, "h_fillet": 0.15},
-                ref_note="h_contact 0.05 mm, h_fillet 0.15 mm (validation/speed_vs_error's reference)",
+                ref_mesh={"h_contact": 0.05, "h_fillet": p["module"] / 60},
+                ref_note=f"h_contact 0.05 mm (validation/speed_vs_error's reference), h_fillet m/60 = "
+                         f"{fmt(p['module'] / 60)} mm, tiled teeth",
                 source="validation/speed_vs_error/pairs.py")
 
 
@@ -162,8 +163,8 @@ def random_pair(key, d):
     m = d["module"]
     return dict(key=key, title=f"random {key[4:]}: {d['teeth'][0]}/{d['teeth'][1]} m {m:g}", geometry=random_geometry(d),
                 module=m, teeth=tuple(d["teeth"]), shift=tuple(d["shift"]), face_width=d["face_width"],
-                torques=tuple(d["torques"]), ref_mesh={"h_contact": m / 60, "h_fillet": 0.05 * m},
-                ref_note=f"h_contact m/60 = {fmt(m / 60)} mm, h_fillet 0.05 m = {fmt(0.05 * m)} mm",
+                torques=tuple(d["torques"]), ref_mesh={"h_contact": m / 60, "h_fillet": m / 60},
+                ref_note=f"h_contact = h_fillet = m/60 = {fmt(m / 60)} mm, tiled teeth",
                 source=f"drawn, seed {SEED}", design=d)
 
 
@@ -201,7 +202,10 @@ def runs(pair):
     r["auto"] = (f"Solve/Target = {TARGET_TEXT}, Cost cap {COST_CAP}, no Mesh settings",
                  {"Solve": {"Target": TARGET_TEXT, "Cost cap": str(COST_CAP)}})
     r["ref"] = (f"reference: {pair['ref_note']}",
-                {"Mesh": {k: fmt(v) for k, v in pair["ref_mesh"].items()}})
+                # Tiled teeth: gmsh meshes a 50-tooth gear with m/60 fillets whole in more than 6 min
+                # (its subdivision fallback), by tiles in under a second; the two agree within
+                # 0.01 % on the STE and 0.09 % on the root stress (Parker, README).
+                {"Mesh": {**{k: fmt(v) for k, v in pair["ref_mesh"].items()}, "Tiled teeth": "true"}})
     return r
 
 

@@ -3,6 +3,8 @@
 // - choose_model: the rules stated in choice/choose.h (measured ladder, validation/speed_vs_error),
 //   and the flank height r_SAP - r_Ff of the Siasos 2010 23/69 pair computed here from the
 //   line of action and the form circle (0.190 mm in validation/RESULTS.md);
+// - fillet_resolution: the envelope of measured root-stress errors against h_fillet m/60
+//   (four pairs, the table in the test);
 // - estimate_relative: Richardson is exact for Q(h) = Q0 + C h^2 (closed form), with the
 //   companion coarser or finer;
 // - fixed_settings: what the input text sets;
@@ -72,6 +74,40 @@ TEST(ChoiceTarget, ParsesListsPresetsAndRefusesBadText)
           EXPECT_NE(std::string(e.what()).find("Solve/Target"), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(ChoiceRules, FilletResolutionBoundsTheMeasuredRootStressErrors)
+{
+  // Reference: the measured errors of the fitted fillet peak against h_fillet m/60 (largest
+  // of pinion and gear; h_contact m/45 by tiles, one single-contact position; Parker 50/50
+  // m 3 at 200 N m, FZG type C at 183.4 N m, Siasos 2010 23/69 at 350 N m, 41/28 m 2.5 at
+  // 150.5 N m), m/n for n = 6 ... 40. The resolution must cover every one of them (it is their
+  // envelope) and fall with h, and it must not exceed the largest by more than 1.6 times
+  // where the scatter is resolved (n >= 10): a bound, not a blanket.
+  const double m = 4e-3;
+  const std::vector<std::pair<int, double>> worst = {{6, 0.0180}, {7, 0.0087}, {8, 0.0112}, {10, 0.0089},
+                                                     {12, 0.0076}, {15, 0.0053}, {20, 0.0036}, {30, 0.0013},
+                                                     {40, 0.0010}};
+  double before = 1;
+  for (const auto &[n, e] : worst)
+    {
+      const double r = choice::fillet_resolution(m / n, m);
+      EXPECT_GE(r, e * 0.999) << "m/" << n;
+      if (n >= 10 && n <= 20)
+        EXPECT_LE(r, 1.6 * e) << "m/" << n;
+      EXPECT_LT(r, before);
+      before = r;
+    }
+  // The first guess for a tight root-stress tolerance: the size whose resolution is within
+  // tolerance / 1.1; m/12 (never coarser) for 3 %.
+  dealii::ParameterHandler prm;
+  auto in        = parse(test::parker_pair(), prm);
+  const double mp = 3e-3;
+  const auto c   = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("root stress 0.5"), {});
+  EXPECT_NEAR(choice::fillet_resolution(c.mesh[0].h_fillet, mp), 0.005 / 1.1, 1e-9);
+  EXPECT_LT(c.mesh[0].h_fillet, mp / 15);
+  EXPECT_NEAR(choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("root stress 3"), {}).mesh[0].h_fillet,
+              mp / 12, 1e-12);
 }
 
 TEST(ChoiceRules, FollowTheLadderAndCatchTheFlankHeight)
