@@ -360,7 +360,9 @@ def main():
               "|---|---|---|---|---|---|"] + per_torque
     lines += ["", "## Estimate against the true error (auto)", "",
               f"Floor {100 * FLOOR:g} %: above it estimate / true in [{RATIO[0]:g}, {RATIO[1]:g}] (mean STE, root "
-              f"stress); below it the estimate at most {100 * FLOOR_ESTIMATE:g} %. p-p STE: reported only. True "
+              f"stress); below it the estimate at most {100 * FLOOR_ESTIMATE:g} %. Root stress below the delivered "
+              "level's stated resolution (run.json root_stress_resolution): the estimate in [true error, 2 x the "
+              "resolution], 'above the floor' no. p-p STE: reported only. True "
               "error: the largest over the pair's torques (gearfem's estimate covers its samples at every torque).", "",
               "| pair | quantity | true error [%] | estimate [%] | estimate / true | above the floor |",
               "|---|---|---|---|---|---|"]
