@@ -49,12 +49,16 @@ namespace gearfem::choice
   namespace
   {
     constexpr double resolution_m6 = 0.0182; ///< fillet_resolution at h_fillet m/6
-    constexpr double resolution_exponent = 1.25;
   } // namespace
 
   double fillet_resolution(double h_fillet, double m)
   {
-    return resolution_m6 * std::pow(6 * h_fillet / m, resolution_exponent);
+    return resolution_m6 * std::pow(6 * h_fillet / m, fillet_resolution_order);
+  }
+
+  double fillet_size_for_resolution(double resolution, double m)
+  {
+    return m / 6 * std::pow(resolution / resolution_m6, 1 / fillet_resolution_order);
   }
 
   double snap_finer(double h, double m)
@@ -145,9 +149,8 @@ namespace gearfem::choice
     std::string fdriver = "no root-stress tolerance: m/8";
     if (target.asks(Quantity::root_stress))
       {
-        // The size whose resolution is within the tolerance / 1.1 (fillet_resolution).
-        const double tol = target[Quantity::root_stress] / 1.1;
-        hf = std::min(m / 12, m / 6 * std::pow(tol / resolution_m6, 1 / resolution_exponent));
+        // The size whose resolution is within the tolerance / 1.1.
+        hf = std::min(m / 12, fillet_size_for_resolution(target[Quantity::root_stress] / 1.1, m));
         fdriver = "root stress " + pc(target[Quantity::root_stress]) + " (resolution " +
                   pc(fillet_resolution(hf, m)) +
                   " there, the envelope of the measured errors; never coarser than m/12, so the fillet keeps "

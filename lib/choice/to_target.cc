@@ -265,17 +265,18 @@ namespace gearfem::choice
               l.estimate[q] = carried[q];
           // Two levels cannot resolve a root-stress error below the fillet mesh's resolution:
           // the estimate is never smaller (fillet_resolution).
+          constexpr int root = static_cast<int>(Quantity::root_stress);
           l.fillet_resolution = fillet_resolution(l.h_fillet, m);
-          if (std::isfinite(l.estimate[2]))
-            l.estimate[2] = std::max(l.estimate[2], l.fillet_resolution);
+          if (std::isfinite(l.estimate[root]))
+            l.estimate[root] = std::max(l.estimate[root], l.fillet_resolution);
           double worst_c = 0, worst_f = 0;
           for (int q = 0; q < n_quantities; ++q)
             if (target.tolerance[q] > 0)
               {
                 const double ratio = std::isfinite(l.estimate[q]) ? l.estimate[q] / target.tolerance[q] : 2.0;
                 if (ratio > 1)
-                  (q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c) =
-                    std::max(q == static_cast<int>(Quantity::root_stress) ? worst_f : worst_c, ratio);
+                  (q == root ? worst_f : worst_c) =
+                    std::max(q == root ? worst_f : worst_c, ratio);
               }
           o.levels.push_back(l);
           if (worst_c == 0 && worst_f == 0)
@@ -300,9 +301,10 @@ namespace gearfem::choice
           // The contact group moves to the rung at or below h / factor.
           const double h_now = cand.mesh[0].h_contact;
           const double fc = worst_c > 0 ? h_now / snap_finer(h_now / refinement(worst_c, options.order), m) : 1;
-          // Where the resolution is the estimate, it falls as h^1.25 (fillet_resolution), not h^p.
-          const bool at_resolution = l.estimate[2] <= l.fillet_resolution;
-          const double ff = worst_f > 0 ? refinement(worst_f, at_resolution ? 1.25 : options.order) : 1;
+          // Where the resolution is the estimate, it falls with fillet_resolution_order, not p.
+          const bool at_resolution = l.estimate[root] <= l.fillet_resolution;
+          const double ff =
+            worst_f > 0 ? refinement(worst_f, at_resolution ? fillet_resolution_order : options.order) : 1;
           const double per_position = l.seconds_samples / std::max<std::size_t>(1, l.samples.size());
           const double next = (l.seconds_setup + per_position * sweep_positions) * std::pow(std::max(fc, ff), 1.5);
           if (options.cost_cap > 0 && spent + since(t0) + next > options.cost_cap)

@@ -105,6 +105,8 @@ TEST(ChoiceRules, FilletResolutionBoundsTheMeasuredRootStressErrors)
   const double mp = 3e-3;
   const auto c   = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("root stress 0.5"), {});
   EXPECT_NEAR(choice::fillet_resolution(c.mesh[0].h_fillet, mp), 0.005 / 1.1, 1e-9);
+  // fillet_size_for_resolution is its inverse.
+  EXPECT_NEAR(choice::fillet_size_for_resolution(choice::fillet_resolution(mp / 20, mp), mp), mp / 20, 1e-15);
   EXPECT_LT(c.mesh[0].h_fillet, mp / 15);
   EXPECT_NEAR(choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("root stress 3"), {}).mesh[0].h_fillet,
               mp / 12, 1e-12);
