@@ -333,6 +333,36 @@ namespace gearfem::choice
     }
   } // namespace
 
+  namespace
+  {
+    /// Full gears under positive torques, Mesh/Fine teeth left at auto: the fine sizes go
+    /// to the teeth the swept and sampled positions load (loaded_teeth), not to the five
+    /// teeth around tooth 0 that `auto` refines for any position.
+    void restrict_fine_teeth(const solve::GearContactInput &in, TargetOutcome &o, Sizes &cand)
+    {
+      for (const auto &g : cand.mesh)
+        if (g.model != mesh::GearMeshParameters::Model::full_gear || g.fine_teeth != "auto")
+          return;
+      for (const double T : o.torques)
+        if (!(T > 0))
+          return;
+      std::vector<double> roll = o.positions;
+      for (const auto &p : in.positions())
+        roll.push_back(p.second);
+      const std::vector<int> k = loaded_teeth(*in.pair, roll);
+      if (k.empty() || k.size() >= 5)
+        return;
+      cand.mesh[0].fine_teeth = fine_teeth_list(k, 1);
+      cand.mesh[1].fine_teeth = fine_teeth_list(k, -1);
+      o.choice.reasons.push_back("fine teeth " + cand.mesh[0].fine_teeth + " (pinion) and " + cand.mesh[1].fine_teeth +
+                                 " (gear): the teeth the swept positions load, with a margin of 0.2 pitch beyond A "
+                                 "and E for the contact a loaded pair makes early; the other teeth keep the coarse "
+                                 "size (Parker 50/50 at m/45: 157 000 to 122 000 DoFs, 16 % less CPU, errors "
+                                 "against the reference mean STE 0.032 / p-p 0.19 / root stress 0.62 % instead of "
+                                 "0.026 / 0.20 / 0.63 %)");
+    }
+  } // namespace
+
   TargetOutcome run_to_target(solve::GearContactInput &in, const AccuracyTarget &target, const FixedSettings &fixed,
                               const TargetOptions &options)
   {
@@ -356,6 +386,7 @@ namespace gearfem::choice
     if (!fixed.tiled)
       for (auto &g : cand.mesh)
         g.tiled = true;
+    restrict_fine_teeth(in, o, cand);
     const double m = in.pair->gear(1).parameters().rack.module;
     const bool asks_contact = target.asks(Quantity::mean_ste) || target.asks(Quantity::pp_ste) ||
                               target.asks(Quantity::p_max);
@@ -382,6 +413,20 @@ namespace gearfem::choice
       }
     std::unique_ptr<contact::GearContactModel> model;
     Sizes companion = scaled(cand, rc, rf);
+    // A coarser companion also has coarser unloaded teeth (h_tooth, by the larger factor):
+    // they carry no load, and h_tooth 0.8 m instead of 0.4 m moves the mean STE by 0.003 %,
+    // the p-p and the root stress by 0.001 % (Parker 50/50, Siasos 2010 23/69), while the
+    // set-up falls by a fifth (Siasos: 108 000 to 90 000 DoFs, 1.32 to 1.06 s). The body keeps
+    // its size: at 2 h_body the Siasos mean STE moved by 0.05 % and the mean STE estimate of
+    // the delivered level rose from 0.07 to 0.17 % for a true 0.035 %.
+    if (rc >= 1 && rf >= 1 && std::max(rc, rf) >= 1.4)
+      for (int i = 0; i < 2; ++i)
+        {
+          auto &g = companion.mesh[i];
+          const double mi    = in.pair->gear(i + 1).parameters().rack.module;
+          const double tooth = g.h_tooth > 0 ? g.h_tooth : std::min(g.h_body, 0.4 * mi);
+          g.h_tooth          = std::min({g.h_body, mi, std::max(rc, rf) * tooth});
+        }
     o.levels.push_back(solve_level(in, companion, "companion", o, options, model));
     model.reset();
 

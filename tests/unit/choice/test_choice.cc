@@ -243,6 +243,27 @@ TEST(ChoiceEstimate, ZoneWeightsAreTheShareOfEachZoneInAPitch)
   EXPECT_NEAR(w[1], 2 - in.pair->contact_ratio(), 1e-9);
 }
 
+TEST(ChoiceRules, LoadedTeethAreThoseWhosePathOfContactCoversAPosition)
+{
+  // Pinion tooth k is at own roll phi1 + k tau; it carries load within [A, E]. Over one pitch
+  // from A (eps_alpha 1.75 < 2): pairs 0 and 1 only; the 0.2-pitch margin adds pair -1, which
+  // the FE loads early at the last positions of the pitch (Parker, 340 N m, 0.03 pitch
+  // before A, validation/model_choice). At C alone: pair 0, and pairs 1 and -1 within the
+  // margin (0.12 pitch beyond E and before A: the 50/50 pair is symmetric about C).
+  dealii::ParameterHandler prm;
+  const auto in     = parse(test::parker_pair(), prm);
+  const double A    = in.pair->point("A").roll_angle;
+  const double tau  = 2 * M_PI / 50;
+  std::vector<double> pitch;
+  for (int i = 0; i < 40; ++i)
+    pitch.push_back(A + i * tau / 40);
+  EXPECT_EQ(choice::loaded_teeth(*in.pair, pitch, 0), (std::vector<int>{0, 1}));
+  EXPECT_EQ(choice::loaded_teeth(*in.pair, pitch), (std::vector<int>{-1, 0, 1}));
+  EXPECT_EQ(choice::loaded_teeth(*in.pair, {0.0}, 0), (std::vector<int>{0}));
+  EXPECT_EQ(choice::loaded_teeth(*in.pair, {0.0}), (std::vector<int>{-1, 0, 1}));
+  EXPECT_EQ(choice::fine_teeth_list({-1, 0, 2}, -1), "-2,0,1");
+}
+
 TEST(ChoiceParameters, TellSetEntriesFromDefaults)
 {
   dealii::ParameterHandler prm;
