@@ -7,6 +7,10 @@
 //   (four pairs, the table in the test);
 // - estimate_relative: Richardson is exact for Q(h) = Q0 + C h^2 (closed form), with the
 //   companion coarser or finer;
+// - loaded_teeth: the path-of-contact kinematics (pinion tooth k at own roll phi1 + k tau,
+//   loaded within A..E), and the same model with the fine sizes on teeth -3..3 (refining
+//   only the loaded teeth changes no result; leaving out the early-loaded pair moves the
+//   STE by 6 % at the last position of the pitch);
 // - fixed_settings: what the input text sets;
 // - run_to_target on 3-tooth sectors: the delivered estimate meets a loose target, and the
 //   delivered level's samples equal a direct solve of that model (solver tolerance).
@@ -262,6 +266,46 @@ TEST(ChoiceRules, LoadedTeethAreThoseWhosePathOfContactCoversAPosition)
   EXPECT_EQ(choice::loaded_teeth(*in.pair, {0.0}, 0), (std::vector<int>{0}));
   EXPECT_EQ(choice::loaded_teeth(*in.pair, {0.0}), (std::vector<int>{-1, 0, 1}));
   EXPECT_EQ(choice::fine_teeth_list({-1, 0, 2}, -1), "-2,0,1");
+}
+
+TEST(ChoiceRules, RefiningOnlyTheLoadedTeethChangesNoResult)
+{
+  // Conservation of the modelled physics: over a pitch from A at 1.5 times Parker's highest
+  // torque (pairs load early under it), the fine sizes on the loaded teeth only (-1, 0, 1)
+  // give the STE and root stresses of the same sizes on teeth -3..3. Coarse (m/10) so that
+  // the teeth left coarse would show: a loaded coarse tooth moves the STE by percents.
+  dealii::ParameterHandler prm;
+  auto in = parse(test::parker_pair(R"(
+subsection Mesh
+  set h_contact = 0.3
+  set h_fillet  = 0.5
+  set Tiled teeth = true
+end
+)"),
+                  prm);
+  const double A   = in.pair->point("A").roll_angle;
+  const double tau = 2 * M_PI / 50;
+  std::vector<double> roll;
+  for (int i = 0; i < 8; ++i)
+    roll.push_back(A + i * tau / 8 + (i == 7 ? 0.1 * tau / 8 : 0)); // the last one close to A + tau
+  const auto k = choice::loaded_teeth(*in.pair, roll);
+  ASSERT_EQ(k, (std::vector<int>{-1, 0, 1}));
+  std::vector<solve::EstimatedQuantities> q[2];
+  for (int wide = 0; wide < 2; ++wide)
+    {
+      mesh::GearMeshParameters g[2] = {in.mesh[0], in.mesh[1]};
+      g[0].fine_teeth = wide ? "-3,-2,-1,0,1,2,3" : choice::fine_teeth_list(k, 1);
+      g[1].fine_teeth = wide ? "-3,-2,-1,0,1,2,3" : choice::fine_teeth_list(k, -1);
+      contact::GearContactModel model(*in.pair, g, in.material, in.fe, in.contact);
+      model.observe_root_stress();
+      q[wide] = solve::solve_samples(model, roll, {510.0}, post::PostOptions{});
+    }
+  for (std::size_t i = 0; i < roll.size(); ++i)
+    {
+      EXPECT_NEAR(q[0][i].ste, q[1][i].ste, 5e-4 * q[1][i].ste) << "position " << i;
+      EXPECT_NEAR(q[0][i].root_stress_pinion, q[1][i].root_stress_pinion, 2e-3 * q[1][i].root_stress_pinion);
+      EXPECT_NEAR(q[0][i].root_stress_gear, q[1][i].root_stress_gear, 2e-3 * q[1][i].root_stress_gear);
+    }
 }
 
 TEST(ChoiceParameters, TellSetEntriesFromDefaults)
