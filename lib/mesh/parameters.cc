@@ -78,7 +78,8 @@ namespace gearfem::mesh
                           "Units: mm.");
         prm.declare_entry("Fine teeth", "auto", Anything(),
                           "Teeth meshed with h_contact/h_fillet: auto (full gear: teeth -2..2, those "
-                          "in contact over a mesh cycle plus one on each side; sector: all) or a "
+                          "in contact over a mesh cycle plus one on each side; with Solve/Target, "
+                          "the teeth the positions load; sector: all) or a "
                           "comma-separated list of tooth indices (negative allowed, modulo z).");
         prm.leave_subsection();
       }
