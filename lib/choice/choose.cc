@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <sstream>
 
 namespace gearfem::choice
@@ -68,31 +67,6 @@ namespace gearfem::choice
       if (m / n <= 1.1 * h * (1 + 1e-9))
         return m / n;
     return h;
-  }
-
-  std::vector<int> loaded_teeth(const geometry::GearPair &pair, const std::vector<double> &roll,
-                                double margin_pitches)
-  {
-    const double tau = 2 * M_PI / pair.teeth(1);
-    const double lo = pair.point("A").roll_angle - margin_pitches * tau;
-    const double hi = pair.point("E").roll_angle + margin_pitches * tau;
-    std::set<int> k;
-    for (const double phi : roll)
-      for (int i = int(std::ceil((lo - phi) / tau)); i <= int(std::floor((hi - phi) / tau)); ++i)
-        k.insert(i);
-    return {k.begin(), k.end()};
-  }
-
-  std::string fine_teeth_list(const std::vector<int> &teeth, int sign)
-  {
-    std::vector<int> t;
-    for (const int k : teeth)
-      t.push_back(sign * k);
-    std::sort(t.begin(), t.end());
-    std::string s;
-    for (const int k : t)
-      s += (s.empty() ? "" : ",") + std::to_string(k);
-    return s;
   }
 
   double flank_height_bound(const geometry::GearPair &pair)

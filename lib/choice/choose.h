@@ -51,16 +51,6 @@ namespace gearfem::choice
   /// The coarsest rung at or below 1.1 h (h itself below the finest rung).
   double snap_finer(double h, double m);
 
-  /// The pinion teeth k (pinion tooth k meshes with gear tooth -k) that carry load at some
-  /// pinion position of `roll` [rad]: those whose own roll angle phi1 + k 2 pi / z1 falls
-  /// within [A - margin, E + margin], margin `margin_pitches` angular pitches, which takes
-  /// the contact a loaded pair makes before A (the last positions of a pitch from A load
-  /// the next pair: Parker 50/50 at 340 N m, 0.03 pitch early). Sorted.
-  std::vector<int> loaded_teeth(const geometry::GearPair &pair, const std::vector<double> &roll,
-                                double margin_pitches = 0.2);
-  /// `teeth` as a Mesh/Fine teeth list ("-1,0,1"), each index times `sign`.
-  std::string fine_teeth_list(const std::vector<int> &teeth, int sign);
-
   /// The flank height bound of ModelChoice::flank_height.
   double flank_height_bound(const geometry::GearPair &pair);
 

@@ -336,7 +336,7 @@ namespace gearfem::choice
   namespace
   {
     /// Full gears under positive torques, Mesh/Fine teeth left at auto: the fine sizes go
-    /// to the teeth the swept and sampled positions load (loaded_teeth), not to the five
+    /// to the teeth the swept and sampled positions load (geometry::loaded_teeth), not to the five
     /// teeth around tooth 0 that `auto` refines for any position.
     void restrict_fine_teeth(const solve::GearContactInput &in, TargetOutcome &o, Sizes &cand)
     {
@@ -349,11 +349,11 @@ namespace gearfem::choice
       std::vector<double> roll = o.positions;
       for (const auto &p : in.positions())
         roll.push_back(p.second);
-      const std::vector<int> k = loaded_teeth(*in.pair, roll);
+      const std::vector<int> k = geometry::loaded_teeth(*in.pair, roll);
       if (k.empty() || k.size() >= 5)
         return;
-      cand.mesh[0].fine_teeth = fine_teeth_list(k, 1);
-      cand.mesh[1].fine_teeth = fine_teeth_list(k, -1);
+      cand.mesh[0].fine_teeth = mesh::fine_teeth_list(k, 1);
+      cand.mesh[1].fine_teeth = mesh::fine_teeth_list(k, -1);
       o.choice.reasons.push_back("fine teeth " + cand.mesh[0].fine_teeth + " (pinion) and " + cand.mesh[1].fine_teeth +
                                  " (gear): the teeth the swept positions load, with a margin of 0.2 pitch beyond A "
                                  "and E for the contact a loaded pair makes early; the other teeth keep the coarse "

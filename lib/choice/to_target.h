@@ -10,7 +10,7 @@
 // quantities are refined by the factor the estimate asks for, the candidate becomes the
 // companion of the next level, and so on, within a cost cap. The sweep then runs on the
 // accepted level, and its estimate is reported beside each quantity. Full gears under positive
-// torques refine only the teeth the swept positions load (loaded_teeth), and the companion
+// torques refine only the teeth the swept positions load (geometry::loaded_teeth), and the companion
 // also coarsens the unloaded teeth.
 #include "choice/choose.h"
 #include "solve/error_estimate.h"

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <set>
 #include <sstream>
 #include <limits>
 
@@ -578,5 +579,16 @@ namespace gearfem::geometry
     std::ostringstream hex;
     hex << std::hex << h;
     return hex.str();
+  }
+  std::vector<int> loaded_teeth(const GearPair &pair, const std::vector<double> &roll, double margin_pitches)
+  {
+    const double tau = 2 * M_PI / pair.teeth(1);
+    const double lo  = pair.point("A").roll_angle - margin_pitches * tau;
+    const double hi  = pair.point("E").roll_angle + margin_pitches * tau;
+    std::set<int> k;
+    for (const double phi : roll)
+      for (int i = int(std::ceil((lo - phi) / tau)); i <= int(std::floor((hi - phi) / tau)); ++i)
+        k.insert(i);
+    return {k.begin(), k.end()};
   }
 } // namespace gearfem::geometry

@@ -129,6 +129,14 @@ namespace gearfem::geometry
   /// Z_min = 2[(h_fP* - x) - rho_fP*(1 - sin a)] / sin^2 a.
   double minimum_teeth_without_undercut(double alpha, double dedendum, double root_radius,
                                         double shift);
+  /// The pinion teeth k (pinion tooth k meshes with gear tooth -k) that carry load at some
+  /// pinion position of `roll` [rad] under a positive (drive-side) torque: those whose own
+  /// roll angle phi1 + k 2 pi / z1 falls within [A - margin, E + margin], margin
+  /// `margin_pitches` angular pitches, which takes the contact a loaded pair makes before A
+  /// (the last positions of a pitch from A load the next pair: Parker 50/50 at 340 N m, 0.03
+  /// pitch early). Sorted.
+  std::vector<int> loaded_teeth(const GearPair &pair, const std::vector<double> &roll, double margin_pitches = 0.2);
+
   /// Centre distance from the shifts (zero backlash): inv a_w = inv a + 2 tan a (x1+x2)/(z1+z2).
   double center_distance_from_shifts(double module, double alpha, int z1, int z2, double x1,
                                      double x2);

@@ -63,16 +63,16 @@ namespace gearfem::mesh
     if (rim_thickness < 0)
       throw InputError("Mesh/Rim thickness", to_string_g(rim_thickness * 1e3) + " mm",
                        ">= 0 (0: automatic)");
-    if (fine_teeth != "auto")
+    if (fine_teeth != "auto" && fine_teeth != "loaded")
       {
         try
           {
             if (parse_int_list("Mesh/Fine teeth", fine_teeth).empty())
-              throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
+              throw InputError("Mesh/Fine teeth", fine_teeth, "auto, loaded or a list of tooth indices");
           }
         catch (const InputError &)
           {
-            throw InputError("Mesh/Fine teeth", fine_teeth, "auto or a list of tooth indices");
+            throw InputError("Mesh/Fine teeth", fine_teeth, "auto, loaded or a list of tooth indices");
           }
       }
   }
@@ -95,8 +95,23 @@ namespace gearfem::mesh
     return t;
   }
 
+  std::string fine_teeth_list(const std::vector<int> &teeth, int sign)
+  {
+    std::vector<int> t;
+    for (const int k : teeth)
+      t.push_back(sign * k);
+    std::sort(t.begin(), t.end());
+    std::string s;
+    for (const int k : t)
+      s += (s.empty() ? "" : ",") + std::to_string(k);
+    return s;
+  }
+
   std::vector<int> fine_teeth(const GearMeshParameters &p, int z)
   {
+    if (p.fine_teeth == "loaded")
+      throw InputError("Mesh/Fine teeth", "loaded",
+                       "auto or a list of tooth indices here (loaded needs the Solve positions of gearfem solve)");
     std::set<int> s;
     if (p.fine_teeth == "auto")
       {

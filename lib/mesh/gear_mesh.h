@@ -34,8 +34,10 @@ namespace gearfem::mesh
     double bore_radius      = 0;       ///< [m]; 0: half the root radius
     double rim_thickness    = 0;       ///< below the root circle [m]; 0: bore (full gear) or 2.75 m (sector)
     /// Teeth that get the fine sizes: "auto" (teeth -2..2 of a full gear: those in contact
-    /// over a mesh cycle around tooth 0 plus one on each side; all teeth of a sector) or a
-    /// comma-separated list of tooth indices (negative allowed, taken modulo z).
+    /// over a mesh cycle around tooth 0 plus one on each side; all teeth of a sector), a
+    /// comma-separated list of tooth indices (negative allowed, taken modulo z), or "loaded",
+    /// which the solve input turns into the list of the teeth its positions load
+    /// (geometry::loaded_teeth) before any mesh is built.
     std::string fine_teeth = "auto";
     /// Radii [m] at which the flanks of the fine teeth are split into separate gmsh curves
     /// (same boundary id), so that mesh vertices sit at the edges of a load patch.
@@ -70,8 +72,11 @@ namespace gearfem::mesh
   double corner_size(const GearMeshParameters &p, double module);
   /// Element size on the coast flanks of the fine teeth [m]: h_coast, or h_fillet when 0.
   double coast_size(const GearMeshParameters &p);
-  /// Tooth indices (0 <= k < z) that get fine sizes.
+  /// Tooth indices (0 <= k < z) that get fine sizes. Throws InputError for "loaded" (not
+  /// resolved: only inputs with Solve positions take it).
   std::vector<int> fine_teeth(const GearMeshParameters &p, int z);
+  /// `teeth` as a Fine teeth list ("-1,0,1"), each index times `sign`, sorted.
+  std::string fine_teeth_list(const std::vector<int> &teeth, int sign);
   /// Tooth indices of the model in outline order (all z, or the N sector teeth around 0).
   std::vector<int> model_teeth(const GearMeshParameters &p, int z);
   /// Radius of the inner boundary (bore or fixed rim) [m]. Throws InputError when it

@@ -178,6 +178,28 @@ namespace gearfem::solve
     declare_ring_parameters(prm);
   }
 
+  namespace
+  {
+    /// `Mesh/Gear i/Fine teeth = loaded`: the teeth the Solve positions load
+    /// (geometry::loaded_teeth; pinion tooth k meshes with gear tooth -k).
+    void resolve_loaded_teeth(GearContactInput &in)
+    {
+      if (in.mesh[0].fine_teeth != "loaded" && in.mesh[1].fine_teeth != "loaded")
+        return;
+      for (int i = 0; i < 2; ++i)
+        if (in.mesh[i].fine_teeth == "loaded" && in.mesh[i].model != mesh::GearMeshParameters::Model::full_gear)
+          throw InputError("Mesh/Gear " + std::to_string(i + 1) + "/Fine teeth", "loaded",
+                           "auto or a list of tooth indices for Mesh/Model = sector (all its teeth are fine)");
+      std::vector<double> roll;
+      for (const auto &p : in.positions())
+        roll.push_back(p.second);
+      const std::vector<int> k = geometry::loaded_teeth(*in.pair, roll);
+      for (int i = 0; i < 2; ++i)
+        if (in.mesh[i].fine_teeth == "loaded")
+          in.mesh[i].fine_teeth = mesh::fine_teeth_list(k, i == 0 ? 1 : -1);
+    }
+  } // namespace
+
   GearContactInput parse_gear_contact_input(dealii::ParameterHandler &prm)
   {
     return parse_gear_contact_input(prm, nullptr);
@@ -194,9 +216,14 @@ namespace gearfem::solve
     for (int i = 0; i < 2; ++i)
       in.mesh[i] = mesh::parse_mesh_parameters(prm, i + 1);
     in.fe      = fem::parse_fe_parameters(prm);
+    in.solve   = parse_solve_parameters(prm);
     using Relief = geometry::TipRelief::Kind;
     if (internal_pair_requested(prm))
       {
+        for (int i = 0; i < 2; ++i)
+          if (in.mesh[i].fine_teeth == "loaded")
+            throw InputError("Mesh/Gear " + std::to_string(i + 1) + "/Fine teeth", "loaded",
+                             "auto or a list of tooth indices for Pair/Type = internal");
         const RingInput ring = parse_ring_parameters(prm, gi.gear2, in.mesh[1]);
         in.ring_mesh         = ring.mesh;
         const auto ring_profile = geometry::InternalToothProfile::generate(ring.gear);
@@ -222,6 +249,7 @@ namespace gearfem::solve
     else
       {
         in.pair = std::make_unique<geometry::GearPair>(geometry::build_pair(gi));
+        resolve_loaded_teeth(in);
         for (int i = 0; i < 2; ++i)
           {
             contact::check_contact_mesh(in.mesh[i]);
@@ -239,7 +267,6 @@ namespace gearfem::solve
     for (int i = 0; i < 2; ++i)
       in.material[i] = fem::elasticity(i == 0 ? pm.gear1 : pm.gear2, in.meshing().face_width(i + 1), pm.plane_strain);
     in.friction = parse_friction_law(prm);
-    in.solve   = parse_solve_parameters(prm);
     (void)in.positions(); // checks the position list
     check_small_strain(in.meshing(), pm, in.solve.torques);
     in.contact.friction = in.friction_coefficients(in.solve.torques).front();

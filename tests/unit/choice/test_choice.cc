@@ -261,11 +261,11 @@ TEST(ChoiceRules, LoadedTeethAreThoseWhosePathOfContactCoversAPosition)
   std::vector<double> pitch;
   for (int i = 0; i < 40; ++i)
     pitch.push_back(A + i * tau / 40);
-  EXPECT_EQ(choice::loaded_teeth(*in.pair, pitch, 0), (std::vector<int>{0, 1}));
-  EXPECT_EQ(choice::loaded_teeth(*in.pair, pitch), (std::vector<int>{-1, 0, 1}));
-  EXPECT_EQ(choice::loaded_teeth(*in.pair, {0.0}, 0), (std::vector<int>{0}));
-  EXPECT_EQ(choice::loaded_teeth(*in.pair, {0.0}), (std::vector<int>{-1, 0, 1}));
-  EXPECT_EQ(choice::fine_teeth_list({-1, 0, 2}, -1), "-2,0,1");
+  EXPECT_EQ(geometry::loaded_teeth(*in.pair, pitch, 0), (std::vector<int>{0, 1}));
+  EXPECT_EQ(geometry::loaded_teeth(*in.pair, pitch), (std::vector<int>{-1, 0, 1}));
+  EXPECT_EQ(geometry::loaded_teeth(*in.pair, {0.0}, 0), (std::vector<int>{0}));
+  EXPECT_EQ(geometry::loaded_teeth(*in.pair, {0.0}), (std::vector<int>{-1, 0, 1}));
+  EXPECT_EQ(mesh::fine_teeth_list({-1, 0, 2}, -1), "-2,0,1");
 }
 
 TEST(ChoiceRules, RefiningOnlyTheLoadedTeethChangesNoResult)
@@ -288,14 +288,14 @@ end
   std::vector<double> roll;
   for (int i = 0; i < 8; ++i)
     roll.push_back(A + i * tau / 8 + (i == 7 ? 0.1 * tau / 8 : 0)); // the last one close to A + tau
-  const auto k = choice::loaded_teeth(*in.pair, roll);
+  const auto k = geometry::loaded_teeth(*in.pair, roll);
   ASSERT_EQ(k, (std::vector<int>{-1, 0, 1}));
   std::vector<solve::EstimatedQuantities> q[2];
   for (int wide = 0; wide < 2; ++wide)
     {
       mesh::GearMeshParameters g[2] = {in.mesh[0], in.mesh[1]};
-      g[0].fine_teeth = wide ? "-3,-2,-1,0,1,2,3" : choice::fine_teeth_list(k, 1);
-      g[1].fine_teeth = wide ? "-3,-2,-1,0,1,2,3" : choice::fine_teeth_list(k, -1);
+      g[0].fine_teeth = wide ? "-3,-2,-1,0,1,2,3" : mesh::fine_teeth_list(k, 1);
+      g[1].fine_teeth = wide ? "-3,-2,-1,0,1,2,3" : mesh::fine_teeth_list(k, -1);
       contact::GearContactModel model(*in.pair, g, in.material, in.fe, in.contact);
       model.observe_root_stress();
       q[wide] = solve::solve_samples(model, roll, {510.0}, post::PostOptions{});

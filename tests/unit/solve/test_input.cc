@@ -4,6 +4,7 @@
 // not) and the contact requirement of a sector (teeth -1, 0, 1 share the mesh cycle).
 #include "base/errors.h"
 #include "common/fixtures.h"
+#include "mesh/gear_mesh.h"
 #include "solve/input.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -53,6 +54,36 @@ TEST(SolveInput, TwoToothSectorRefusedAtParseTime)
       EXPECT_NE(std::string(e.what()).find(">= 3"), std::string::npos) << e.what();
     }
   EXPECT_NO_THROW(parse(test::parker_pair(sector)));
+}
+
+TEST(SolveInput, LoadedFineTeethAreThoseThePositionsLoad)
+{
+  // Fine teeth = loaded becomes the list of geometry::loaded_teeth for the Solve positions:
+  // a pitch from A on Parker (eps_alpha 1.75) loads pairs 0 and 1 and, 0.03 pitch early,
+  // pair -1 (pinion tooth k meshes with gear tooth -k); at C alone, pairs -1..1 within the
+  // 0.2-pitch margin. A sector (all teeth fine) and a mesh built without Solve positions
+  // refuse it with the entry named.
+  const std::string loaded = "subsection Mesh\n  subsection Gear 1\n    set Fine teeth = loaded\n  end\n"
+                             "  subsection Gear 2\n    set Fine teeth = loaded\n  end\nend\n";
+  const auto in = parse(test::parker_pair(loaded));
+  EXPECT_EQ(in.mesh[0].fine_teeth, "-1,0,1");
+  EXPECT_EQ(in.mesh[1].fine_teeth, "-1,0,1");
+  const auto at_c = parse(test::parker_pair(loaded + "subsection Solve\n  set Positions = named\n"
+                                                     "  set Named positions = C\nend\n"));
+  EXPECT_EQ(at_c.mesh[0].fine_teeth, "-1,0,1");
+  try
+    {
+      parse(test::parker_pair(sector + loaded));
+      FAIL() << "a sector took Fine teeth = loaded";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("Mesh/Gear 1/Fine teeth"), std::string::npos) << e.what();
+    }
+  mesh::GearMeshParameters p;
+  p.fine_teeth = "loaded";
+  EXPECT_NO_THROW(p.validate());
+  EXPECT_THROW(mesh::fine_teeth(p, 50), InputError);
 }
 
 TEST(SolveInput, ModelKeySharesWhatTheFactorisationDoesNotDependOn)
