@@ -335,16 +335,13 @@ namespace gearfem::choice
 
   namespace
   {
-    /// Full gears under positive torques, Mesh/Fine teeth left at auto: the fine sizes go
+    /// Full gears, Mesh/Fine teeth left at auto: the fine sizes go
     /// to the teeth the swept and sampled positions load (geometry::loaded_teeth), not to the five
     /// teeth around tooth 0 that `auto` refines for any position.
     void restrict_fine_teeth(const solve::GearContactInput &in, TargetOutcome &o, Sizes &cand)
     {
       for (const auto &g : cand.mesh)
         if (g.model != mesh::GearMeshParameters::Model::full_gear || g.fine_teeth != "auto")
-          return;
-      for (const double T : o.torques)
-        if (!(T > 0))
           return;
       std::vector<double> roll = o.positions;
       for (const auto &p : in.positions())

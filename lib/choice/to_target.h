@@ -9,9 +9,9 @@
 // estimates the candidate's error. Where it exceeds the target, the sizes of the failing
 // quantities are refined by the factor the estimate asks for, the candidate becomes the
 // companion of the next level, and so on, within a cost cap. The sweep then runs on the
-// accepted level, and its estimate is reported beside each quantity. Full gears under positive
-// torques refine only the teeth the swept positions load (geometry::loaded_teeth), and the companion
-// also coarsens the unloaded teeth.
+// accepted level, and its estimate is reported beside each quantity. Full gears refine only
+// the teeth the swept positions load (geometry::loaded_teeth), and the companion also
+// coarsens the unloaded teeth.
 #include "choice/choose.h"
 #include "solve/error_estimate.h"
 #include "solve/input.h"

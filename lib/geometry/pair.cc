@@ -580,6 +580,7 @@ namespace gearfem::geometry
     hex << std::hex << h;
     return hex.str();
   }
+
   std::vector<int> loaded_teeth(const GearPair &pair, const std::vector<double> &roll, double margin_pitches)
   {
     const double tau = 2 * M_PI / pair.teeth(1);

@@ -79,8 +79,8 @@ namespace gearfem::mesh
         prm.declare_entry("Fine teeth", "auto", Anything(),
                           "Teeth meshed with h_contact/h_fillet: auto (full gear: teeth -2..2, those "
                           "in contact over a mesh cycle plus one on each side; with Solve/Target, "
-                          "the teeth the positions load; sector: all), loaded (full gears, "
-                          "positive torques: the teeth the Solve positions load, with 0.2 pitch "
+                          "the teeth the positions load; sector: all), loaded (full gears of an "
+                          "external pair: the teeth the Solve positions load, with 0.2 pitch "
                           "beyond A and E; 12-16 % less CPU than auto for a pitch from A) or a "
                           "comma-separated list of tooth indices (negative allowed, modulo z).");
         prm.leave_subsection();
