@@ -113,10 +113,9 @@ namespace gearfem::choice
               for (int i = 0; i < 2; ++i)
                 {
                   auto &g = sizes.mesh[i];
-                  const double h_tooth =
-                    g.h_tooth > 0 ? g.h_tooth : std::min(g.h_body, 0.4 * in.pair->gear(i + 1).parameters().rack.module);
+                  // The other teeth too, where an inverted cell also appears.
+                  g.h_tooth = 0.85 * mesh::tooth_size(g, in.pair->gear(i + 1).parameters().rack.module);
                   g.h_fillet *= 0.85;
-                  g.h_tooth = 0.85 * h_tooth; // the other teeth, where an inverted cell also appears
                 }
               ++l.remeshed;
               if (options.out)
@@ -419,10 +418,9 @@ namespace gearfem::choice
     if (rc >= 1 && rf >= 1 && std::max(rc, rf) >= 1.4)
       for (int i = 0; i < 2; ++i)
         {
-          auto &g = companion.mesh[i];
-          const double mi    = in.pair->gear(i + 1).parameters().rack.module;
-          const double tooth = g.h_tooth > 0 ? g.h_tooth : std::min(g.h_body, 0.4 * mi);
-          g.h_tooth          = std::min({g.h_body, mi, std::max(rc, rf) * tooth});
+          auto &g         = companion.mesh[i];
+          const double mi = in.pair->gear(i + 1).parameters().rack.module;
+          g.h_tooth       = std::min({g.h_body, mi, std::max(rc, rf) * mesh::tooth_size(g, mi)});
         }
     o.levels.push_back(solve_level(in, companion, "companion", o, options, model));
     model.reset();

@@ -31,6 +31,11 @@ namespace gearfem::mesh
 
   double coast_size(const GearMeshParameters &p) { return p.h_coast > 0 ? p.h_coast : p.h_fillet; }
 
+  double tooth_size(const GearMeshParameters &p, double module)
+  {
+    return p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * module);
+  }
+
   double corner_size(const GearMeshParameters &p, double module)
   {
     const double h = contact_size(p, module);
@@ -394,7 +399,7 @@ namespace gearfem::mesh
     const double ri             = inner_radius(p, tooth);
     const std::vector<int> fine = fine_teeth(p, z);
     const std::set<int> fine_set(fine.begin(), fine.end());
-    const double h_coarse = p.h_tooth > 0 ? p.h_tooth : std::min(p.h_body, 0.4 * m);
+    const double h_coarse = tooth_size(p, m);
     // A corner grading finer than h_contact/50 adds thousands of elements per corner and
     // hangs gmsh's size-field meshing (0.5 nm under 0.5 mm ran past any time limit).
     if (p.h_corner > 0 && p.h_corner < contact_size(p, m) / 50)

@@ -72,6 +72,9 @@ namespace gearfem::mesh
   double corner_size(const GearMeshParameters &p, double module);
   /// Element size on the coast flanks of the fine teeth [m]: h_coast, or h_fillet when 0.
   double coast_size(const GearMeshParameters &p);
+  /// Element size on the outline of the other (coarse) teeth [m]: h_tooth, or min(h_body, 0.4 m)
+  /// when 0.
+  double tooth_size(const GearMeshParameters &p, double module);
   /// Tooth indices (0 <= k < z) that get fine sizes. Throws InputError for "loaded" (not
   /// resolved: only inputs with Solve positions take it).
   std::vector<int> fine_teeth(const GearMeshParameters &p, int z);
