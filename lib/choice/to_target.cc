@@ -342,11 +342,8 @@ namespace gearfem::choice
       for (const auto &g : cand.mesh)
         if (g.model != mesh::GearMeshParameters::Model::full_gear || g.fine_teeth != "auto")
           return;
-      std::vector<double> roll = o.positions;
-      for (const auto &p : in.positions())
-        roll.push_back(p.second);
-      const std::vector<int> k = geometry::loaded_teeth(*in.pair, roll);
-      if (k.empty() || k.size() >= 5)
+      const std::vector<int> k = in.loaded_teeth(o.positions);
+      if (k.size() >= 5)
         return;
       cand.mesh[0].fine_teeth = mesh::fine_teeth_list(k, 1);
       cand.mesh[1].fine_teeth = mesh::fine_teeth_list(k, -1);

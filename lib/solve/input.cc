@@ -190,10 +190,7 @@ namespace gearfem::solve
         if (in.mesh[i].fine_teeth == "loaded" && in.mesh[i].model != mesh::GearMeshParameters::Model::full_gear)
           throw InputError("Mesh/Gear " + std::to_string(i + 1) + "/Fine teeth", "loaded",
                            "auto or a list of tooth indices for Mesh/Model = sector (all its teeth are fine)");
-      std::vector<double> roll;
-      for (const auto &p : in.positions())
-        roll.push_back(p.second);
-      const std::vector<int> k = geometry::loaded_teeth(*in.pair, roll);
+      const std::vector<int> k = in.loaded_teeth();
       for (int i = 0; i < 2; ++i)
         if (in.mesh[i].fine_teeth == "loaded")
           in.mesh[i].fine_teeth = mesh::fine_teeth_list(k, i == 0 ? 1 : -1);
@@ -298,6 +295,14 @@ namespace gearfem::solve
           }
       }
     return w;
+  }
+
+  std::vector<int> GearContactInput::loaded_teeth(const std::vector<double> &extra) const
+  {
+    std::vector<double> roll = extra;
+    for (const auto &p : positions())
+      roll.push_back(p.second);
+    return geometry::loaded_teeth(*pair, roll);
   }
 
   std::vector<std::pair<std::string, double>> GearContactInput::positions() const

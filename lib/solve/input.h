@@ -85,6 +85,9 @@ namespace gearfem::solve
     std::vector<double> friction_coefficients(const std::vector<double> &torques) const;
     /// The positions of the `Solve` section: (name, roll angle [rad]).
     std::vector<std::pair<std::string, double>> positions() const;
+    /// The pinion teeth the `Solve` positions and `extra` roll angles [rad] load (external
+    /// pairs: geometry::loaded_teeth; gear tooth -k meshes with pinion tooth k).
+    std::vector<int> loaded_teeth(const std::vector<double> &extra = {}) const;
     std::unique_ptr<contact::GearContactModel> model() const;
     /// The pair, external or internal.
     const geometry::MeshingPair &meshing() const;
