@@ -58,9 +58,10 @@ namespace gearfem::choice
   /// whose entries named in `fixed` are kept. Rules (errors are the worst measured over three
   /// pairs and three torques, validation/speed_vs_error):
   ///  - h_contact: the coarsest rung (contact_rungs) whose predicted errors (predicted_error:
-  ///    mean STE 1.94 % at about m/10 (an earlier study's meshes; 1.26 % now, the larger kept), p-p 1.3 % at m/30 and never coarser than m/20, where the
-  ///    tip-corner contact is unresolved (p-p 10.6 % at m/12 to m/18), p_max 11.3 % at m/30;
-  ///    all order 2) are within 1.1 times the tolerances. The p-p figure is what the run's own
+  ///    mean STE 1.94 % at about m/10 (an earlier study's meshes; 1.26 % now, the larger
+  ///    kept), p-p 1.3 % at m/30 and never coarser than m/20, where the tip-corner contact is
+  ///    unresolved (p-p 10.6 % at m/12 to m/18), p_max 11.3 % at m/30; all order 2) are within
+  ///    1.1 times the tolerances. The p-p figure is what the run's own
   ///    estimate, which includes twice the swept mesh ripple, gives at m/30 (1.0-2.5 % on the
   ///    five pairs of validation/model_choice; 0.6-1.0 % at m/45), not the true error (at most
   ///    1.1 %): the guess aims at the level the proof accepts, so that one sweep suffices;
