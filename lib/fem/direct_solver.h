@@ -1,7 +1,7 @@
 #pragma once
 // A sparse direct solver that factorises once and solves for many right-hand sides:
-// MUMPS through PETSc (KSPPREONLY + PCLU, MatSolverType mumps) by default, UMFPACK for
-// small problems.
+// MUMPS through PETSc (KSPPREONLY + PCCHOLESKY, MatSolverType mumps: LDL^T of a symmetric
+// positive definite matrix, AMD ordering) by default, UMFPACK for small problems.
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -34,7 +34,8 @@ namespace gearfem::fem
   public:
     DirectSolver();
     ~DirectSolver();
-    /// Factorise A (square). For `automatic`, picks UMFPACK when A.m() <= umfpack_max_dofs.
+    /// Factorise A (symmetric positive definite: MUMPS uses its SPD LDL^T and only the upper
+    /// triangle; UMFPACK takes any square matrix). For `automatic`, picks UMFPACK when A.m() <= umfpack_max_dofs.
     /// Throws SolverError if the factorisation fails (singular matrix).
     void factorize(const dealii::SparseMatrix<double> &A, SolverKind kind,
                    unsigned int umfpack_max_dofs = 20000);
