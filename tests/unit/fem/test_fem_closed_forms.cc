@@ -238,3 +238,46 @@ TEST(FemClosedForms, BadInput)
   fem::ElasticBody body(m, steel(), o);
   EXPECT_THROW(body.assemble_and_factorize(), SolverError);
 }
+
+// Reference: full solves K u = e_d on the same factors, and Maxwell-Betti reciprocity
+// (C = K^{-1} is symmetric). The flexibility columns of the contact come from MUMPS's
+// selected-entries solve on its LDL^T factors of the SPD stiffness; they must equal the
+// corresponding entries of full solves (to 1e-10) and C(i, j) = C(j, i).
+TEST(FemClosedForms, SelectedEntriesOfTheInverseEqualFullSolves)
+{
+  const auto m = mesh::mesh_domain(mesh::annulus_domain(0.01, 0.02, 0.003));
+  fem::FeOptions o;
+  o.degree = 2;
+  o.solver = fem::SolverKind::mumps;
+  fem::ElasticBody body(m, steel(), o);
+  body.constrain(mesh::boundary::bore);
+  body.assemble_and_factorize();
+  ASSERT_EQ(body.solver_used(), fem::SolverKind::mumps);
+  const unsigned int n = body.n_dofs();
+  // Columns spread over the body, each with its own rows (the other columns' DoFs and a few
+  // more), as the contact requests them.
+  const std::vector<unsigned int> cols = {n - 1, n / 2, n / 3 + 1, 7};
+  std::vector<std::vector<unsigned int>> rows(cols.size());
+  for (std::size_t j = 0; j < cols.size(); ++j)
+    {
+      rows[j] = cols;
+      rows[j].push_back((cols[j] + 11) % n);
+      rows[j].push_back((cols[j] + n / 5) % n);
+    }
+  const auto C = body.compliance_columns(cols, rows);
+  double scale = 0;
+  for (std::size_t j = 0; j < cols.size(); ++j)
+    {
+      dealii::Vector<double> e(n);
+      e[cols[j]]   = 1.0;
+      const auto u = body.solve(e);
+      scale        = std::max(scale, u.linfty_norm());
+      ASSERT_EQ(C[j].size(), rows[j].size());
+      for (std::size_t i = 0; i < rows[j].size(); ++i)
+        EXPECT_NEAR(C[j][i], u[rows[j][i]], 1e-10 * u.linfty_norm()) << "column " << cols[j] << ", row " << rows[j][i];
+    }
+  ASSERT_GT(scale, 0);
+  for (std::size_t j = 0; j < cols.size(); ++j)
+    for (std::size_t k = 0; k < cols.size(); ++k)
+      EXPECT_NEAR(C[j][k], C[k][j], 1e-10 * scale);
+}
