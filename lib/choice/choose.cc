@@ -69,6 +69,16 @@ namespace gearfem::choice
     return h;
   }
 
+  double body_size(double given, double m, double ring)
+  {
+    return std::max(given, std::min(1.5 * m, ring / 6));
+  }
+
+  double unloaded_tooth_size(double h_body, double m)
+  {
+    return std::min(h_body, 0.8 * m);
+  }
+
   double flank_height_bound(const geometry::GearPair &pair)
   {
     double bound = 0;
@@ -181,6 +191,30 @@ namespace gearfem::choice
       why.push_back(c.mesh[0].model == mesh::GearMeshParameters::Model::full_gear ?
                       "full gears: sectors are 20-36 % stiff on the mean STE and save at most a fifth of the cost" :
                       "sector: as the input");
+    // The body and the unloaded teeth: sized for the target, not for every question.
+    bool body_sized = false;
+    for (int i = 0; i < 2; ++i)
+      {
+        auto &g = c.mesh[i];
+        if (g.model != mesh::GearMeshParameters::Model::full_gear)
+          continue;
+        const auto &tooth = pair.gear(i + 1);
+        const double mi   = tooth.parameters().rack.module;
+        const double ring = tooth.radii().root - mesh::inner_radius(g, tooth);
+        if (!fixed.h_body)
+          g.h_body = body_size(g.h_body, mi, ring);
+        if (!fixed.h_tooth)
+          g.h_tooth = unloaded_tooth_size(g.h_body, mi);
+        body_sized = body_sized || !fixed.h_body || !fixed.h_tooth;
+      }
+    if (body_sized)
+      why.push_back("h_body " + mm(c.mesh[0].h_body) + " / " + mm(c.mesh[1].h_body) + ", h_tooth " +
+                    mm(mesh::tooth_size(c.mesh[0], m)) + " / " +
+                    mm(mesh::tooth_size(c.mesh[1], pair.gear(2).parameters().rack.module)) +
+                    " (pinion / gear; unless set in the input): the body and the unloaded teeth carry no "
+                    "contact and no fillet peak; 1.5 m (at least six elements through the ring) and 0.8 m instead of "
+                    "3 mm and 0.4 m moved the true errors of five pairs by at most 0.009 % (mean STE), 0.014 % (p-p) "
+                    "and 0.005 % (root stress), for 4-33 % fewer DoFs (validation/model_choice)");
     for (const auto &g : c.mesh)
       g.validate();
     return c;

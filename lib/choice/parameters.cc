@@ -18,6 +18,8 @@ namespace gearfem::choice
     f.h_corner  = set("Mesh", "h_corner");
     f.model     = set("Mesh", "Model");
     f.tiled     = set("Mesh", "Tiled teeth");
+    f.h_body    = set("Mesh", "h_body");
+    f.h_tooth   = set("Mesh", "h_tooth");
     f.degree    = set("Finite elements", "Degree");
     return f;
   }

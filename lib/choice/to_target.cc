@@ -252,13 +252,19 @@ namespace gearfem::choice
       for (;;)
         {
           Level l = solve_level(in, cand, "candidate", o, options, model);
-          // h of the level before / h of this one, from the sizes built.
-          const double rho_c = o.levels.back().h_contact / l.h_contact;
-          const double rho_f = o.levels.back().h_fillet / l.h_fillet;
+          // Richardson against the companion, the coarsest level, from the sizes built: the
+          // largest ratio rho amplifies the level-to-level scatter of non-nested meshes least,
+          // by 1/(rho^2 - 1): 0.33 at rho = 2, 0.16 at 2.7 (a refined level against the
+          // companion), 1.29 at 4/3 (a refined level against the one before it: Siasos 2010
+          // 23/69 with its bodies at h_body 3.4 / 6 mm, m/60 against m/45 estimated the p-p at
+          // 1.14 % where m/90 showed m/60 converged, and a fourth level followed).
+          const Level &ref   = o.levels.front();
+          const double rho_c = ref.h_contact / l.h_contact;
+          const double rho_f = ref.h_fillet / l.h_fillet;
           l.rho_contact = rho_c;
           l.rho_fillet  = rho_f;
-          l.estimate  = estimate_relative(l.samples, o.levels.back().samples, o.positions.size(), rho_c, rho_f,
-                                          options.order, nullptr, zone_samples, o.mean_weights);
+          l.estimate  = estimate_relative(l.samples, ref.samples, o.positions.size(), rho_c, rho_f, options.order,
+                                          nullptr, zone_samples, o.mean_weights);
           for (int q = 0; q < n_quantities; ++q)
             if (!std::isfinite(l.estimate[q]))
               l.estimate[q] = carried[q];
@@ -406,18 +412,21 @@ namespace gearfem::choice
       }
     std::unique_ptr<contact::GearContactModel> model;
     Sizes companion = scaled(cand, rc, rf);
-    // A coarser companion also has coarser unloaded teeth (h_tooth, by the larger factor):
-    // they carry no load, and h_tooth 0.8 m instead of 0.4 m moves the mean STE by 0.003 %,
-    // the p-p and the root stress by 0.001 % (Parker 50/50, Siasos 2010 23/69), while the
-    // set-up falls by a fifth (Siasos: 108 000 to 90 000 DoFs, 1.32 to 1.06 s). The body keeps
-    // its size: at 2 h_body the Siasos mean STE moved by 0.05 % and the mean STE estimate of
-    // the delivered level rose from 0.07 to 0.17 % for a true 0.035 %.
+    // A coarser companion also has coarser unloaded teeth (h_tooth, by the larger factor, up
+    // to unloaded_tooth_size, never finer than the candidate's): they carry no load, and
+    // h_tooth 0.8 m instead of 0.4 m moves the mean STE by 0.003 %, the p-p and the root
+    // stress by 0.001 % (Parker 50/50, Siasos 2010 23/69), while the set-up falls by a fifth
+    // (Siasos: 108 000 to 90 000 DoFs, 1.32 to 1.06 s). Where the choice sized the unloaded
+    // teeth (0.8 m), they are the candidate's. The body keeps its size: at 2 h_body the Siasos
+    // mean STE moved by 0.05 % and the mean STE estimate of the delivered level rose from 0.07
+    // to 0.17 % for a true 0.035 %.
     if (rc >= 1 && rf >= 1 && std::max(rc, rf) >= 1.4)
       for (int i = 0; i < 2; ++i)
         {
           auto &g         = companion.mesh[i];
           const double mi = in.pair->gear(i + 1).parameters().rack.module;
-          g.h_tooth       = std::min({g.h_body, mi, std::max(rc, rf) * mesh::tooth_size(g, mi)});
+          const double h  = mesh::tooth_size(g, mi);
+          g.h_tooth       = std::max(h, std::min(unloaded_tooth_size(g.h_body, mi), std::max(rc, rf) * h));
         }
     o.levels.push_back(solve_level(in, companion, "companion", o, options, model));
     model.reset();
@@ -477,7 +486,7 @@ namespace gearfem::choice
         if (estimated && (t + 1) * n <= l.samples.size())
           {
             const std::vector<solve::EstimatedQuantities> a(l.samples.begin() + t * n, l.samples.begin() + (t + 1) * n),
-              b(o.levels[o.delivered - 1].samples.begin() + t * n, o.levels[o.delivered - 1].samples.begin() + (t + 1) * n);
+              b(o.levels.front().samples.begin() + t * n, o.levels.front().samples.begin() + (t + 1) * n);
             const std::vector<double> pp = {pp_sweep[t]};
             richardson = estimate_relative(a, b, n, l.rho_contact, 1, o.order, &pp, zone_samples)[1];
           }
@@ -563,7 +572,7 @@ namespace gearfem::choice
         s << "\n";
       }
     s << "\nAchieved (estimated relative error of the delivered run: Richardson order " << o.order
-      << " against the level before it at (A+B)/2 and (B+D)/2 for the STE, also at B and D for the stresses, "
+      << " against the companion at (A+B)/2 and (B+D)/2 for the STE, also at B and D for the stresses, "
          "every torque; the p-p STE with twice the swept mesh ripple; the root stress at least the fillet mesh's "
          "resolution, "
       << pc(d.fillet_resolution) << ") against the target:";

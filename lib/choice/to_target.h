@@ -7,11 +7,13 @@
 // and b (the companion), h_b = rho h_a,
 //   e_a = Q_exact - Q_a ~ (Q_b - Q_a) / (1 - rho^p),
 // estimates the candidate's error. Where it exceeds the target, the sizes of the failing
-// quantities are refined by the factor the estimate asks for, the candidate becomes the
-// companion of the next level, and so on, within a cost cap. The sweep then runs on the
-// accepted level, and its estimate is reported beside each quantity. Full gears refine only
-// the teeth the swept positions load (geometry::loaded_teeth), and the companion also
-// coarsens the unloaded teeth.
+// quantities are refined by the factor the estimate asks for, and the refined level is
+// estimated against the companion again (the largest rho: the least amplified scatter of
+// non-nested meshes), and so on, within a cost cap. The sweep then runs on the accepted
+// level, and its estimate is reported beside each quantity. Full gears refine only the teeth
+// the swept positions load (geometry::loaded_teeth), their bodies and unloaded teeth are
+// sized for the target (choose_model), and the companion coarsens the unloaded teeth up to
+// unloaded_tooth_size.
 #include "choice/choose.h"
 #include "solve/error_estimate.h"
 #include "solve/input.h"
@@ -48,7 +50,7 @@ namespace gearfem::choice
     /// Torque-major samples (target_sample_positions x torques).
     std::vector<solve::EstimatedQuantities> samples;
     /// Estimated relative error per quantity (Quantity order) of this level, from it and the
-    /// level before it; NaN where no estimate (the companion).
+    /// companion (the first level); NaN where no estimate (the companion).
     std::array<double, n_quantities> estimate{};
     /// h of the level it was estimated against / h of this level, contact and fillet groups.
     double rho_contact = 1, rho_fillet = 1;

@@ -46,9 +46,11 @@ namespace gearfem::mesh
                       "Element size on the fillets and root of the fine teeth. Units: mm. "
                       "Allowed: > 0 and <= h_body.",
                       true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
-    prm.declare_entry("h_body", "3", Double(), "Largest element size inside the body. Units: mm. Allowed: > 0.");
+    prm.declare_entry("h_body", "3", Double(), "Largest element size inside the body. Units: mm. Allowed: > 0.",
+                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
     prm.declare_entry("h_tooth", "0", Double(),
-                      "Element size on the outline of the other teeth; 0: min(h_body, 0.4 m). Units: mm.");
+                      "Element size on the outline of the other teeth; 0: min(h_body, 0.4 m). Units: mm.",
+                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
     prm.declare_entry("Growth ratio", "1.2", Double(),
                       "Bound on the size ratio of neighbouring elements away from the fine "
                       "boundaries. Units: none. Allowed: > 1.");

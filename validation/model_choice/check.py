@@ -24,8 +24,8 @@ sys.path.append(os.path.join(HERE, "..", "lib"))  # vcheck (run.sh's `check` set
 
 import numpy as np  # noqa: E402
 
-from study import (ALL_KEYS, COST_CAP, DEMO_TORQUE, LOADS_PER_MODULE, MIN_CONTACT_RATIO,  # noqa: E402
-                   SEED, TARGET, TARGET_TEXT, demo_text, max_errors, meets, metrics, metrics_by_torque, pairs, read_run, runs, torques_text,
+from study import (ALL_KEYS, COST_CAP, DEMO_TORQUE, DRAW_GROWTH, LOADS_PER_MODULE, MIN_CONTACT_RATIO,  # noqa: E402
+                   SEED, TARGET, TARGET_TEXT, demo_text, draw_name, is_auto, max_errors, meets, metrics, metrics_by_torque, pairs, read_run, runs, torques_text,
                    true_errors)
 from vcheck import Checks, write_if_changed  # noqa: E402
 
@@ -156,6 +156,35 @@ def estimate_accuracy(c, t, est, errs, ratios, worst=None, resolution=0.0):
                       "floor the estimate must say negligible too (README)", " %")
 
 
+def mesh_draws(c, t, have, errs, cheapest, rows):
+    """The auto run and its mesh draws (study.DRAW_GROWTH): a table row each, and a check that
+    every draw's true errors meet the target."""
+    for g, n in [(1.2, "auto")] + [(g, draw_name(g)) for g in DRAW_GROWTH]:
+        if n not in have:
+            continue
+        cost, run = have[n]
+        mc = run.get("model_choice") or {}
+        lv = mc.get("levels") or []
+        d = lv[-1] if lv else {}
+        e = errs.get(n)
+        est = mc.get("estimate") or {}
+        ok = bool(e) and meets(e)
+        if n != "auto":
+            c.true(f"{t}: mesh draw, Growth ratio {g:g}: true errors within the target", ok,
+                   " / ".join(pc(e[q]) for q in TARGET) + " %" if e else "missing",
+                   "≤ " + " / ".join(pc(v) for v in TARGET.values()) + " %",
+                   "the auto input with Mesh/Growth ratio moved (study.py DRAW_GROWTH); largest error over the torques "
+                   "against the pair's reference")
+        rows.append("| " + " | ".join([
+            t, f"{g:g}" + (" (auto)" if n == "auto" else ""),
+            f"{len(lv)} (" + ", ".join(x.get("role", "?") for x in lv) + ")",
+            f"{num(d.get('h_contact_mm')):.3g} / {num(d.get('h_fillet_mm')):.3g}, {d.get('dofs', '–')}",
+            f"{cost['cpu_s']:.1f}", f"{cost['cpu_s'] / cheapest[0]:.2f}" if cheapest else "–",
+            " / ".join(pc(e[q]) for q in TARGET) if e else "–",
+            " / ".join(pc(num(est.get(q))) for q in TARGET),
+            "yes" if ok else "no"]) + " |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--results", default=os.path.join(HERE, "results"))
@@ -177,7 +206,7 @@ def main():
                             for d in rejected) or "none"))
     P = pairs(designs)
 
-    summary, detail, per_torque, ratios = [], [], [], []
+    summary, detail, per_torque, ratios, draw_rows = [], [], [], [], []
     for key in keys:
         if key == "demo" or key not in P:
             continue
@@ -222,7 +251,7 @@ def main():
         est = check_auto(c, t, mc, errs.get("auto"), target_note, " (largest over the torques)") \
             if "auto" in have else None
         # Cost: the cheapest fixed rung meeting the target (at every torque), by the CPU time of its whole process.
-        fixed = [(have[n][0]["cpu_s"], n) for n in rs if n not in ("auto", "ref") and n in errs and meets(errs[n])]
+        fixed = [(have[n][0]["cpu_s"], n) for n in rs if not is_auto(n) and n != "ref" and n in errs and meets(errs[n])]
         fixed.sort()
         cheapest = fixed[0] if fixed else None
         auto_cpu = have["auto"][0]["cpu_s"] if "auto" in have else None
@@ -241,7 +270,7 @@ def main():
                 ratio = auto_cpu / ref_cpu
                 versus = f"ref ({ref_cpu:.1f} s; no fixed rung meets the target)"
                 c.info(f"{t}: no fixed rung meets the target", "none", "—",
-                       "of " + ", ".join(n for n in rs if n not in ("auto", "ref")) + " (largest errors over the "
+                       "of " + ", ".join(n for n in rs if not is_auto(n) and n != "ref") + " (largest errors over the "
                        "torques); auto compared with the reference")
                 c.at_most(f"{t}: auto CPU / reference CPU (no fixed rung meets the target)", ratio, COST_FACTOR,
                           f"auto {auto_cpu:.1f} s, ref {ref_cpu:.1f} s: process CPU of each whole gearfem solve")
@@ -259,6 +288,7 @@ def main():
                 Tw = max(cand)[1]
                 c.rel(f"{t}: auto, max root stress {g} (the worst of T1 = {Ttext} N m: {Tw:g})", res["auto"][Tw][q],
                       ref[Tw][q], 0.03, src, " MPa")
+        mesh_draws(c, t, have, errs, cheapest, draw_rows)
         ea = errs.get("auto")
         summary.append("| " + " | ".join([
             t, design_text(p), Ttext, chosen_text(mc) if mc else "–", levels_text(mc) if mc else "–",
@@ -358,6 +388,14 @@ def main():
               "(T1 column of the first table).", "",
               "| pair | run | mean STE [%] | p-p STE [%] | root stress [%] | p_max [%] |",
               "|---|---|---|---|---|---|"] + per_torque
+    lines += ["", "## Mesh draws (auto)", "",
+              "The auto input again with `Mesh/Growth ratio` moved about its default 1.2 (one run each): the "
+              "grading changes every non-uniform mesh while the sizes the choice sets stay, so the draws show how "
+              "its levels, cost and true errors vary with the mesh-to-mesh scatter. True errors: the largest over "
+              "the torques; `/ cheapest`: against the cheapest fixed rung of the first table (its CPU there).", "",
+              "| pair | growth ratio | levels (roles) | delivered h_contact / h_fillet [mm], DoFs | CPU [s] | "
+              "/ cheapest | true error mean / p-p / root [%] | estimate mean / p-p / root [%] | meets the target |",
+              "|---|---|---|---|---|---|---|---|---|"] + draw_rows
     lines += ["", "## Estimate against the true error (auto)", "",
               f"Floor {100 * FLOOR:g} %: above it estimate / true in [{RATIO[0]:g}, {RATIO[1]:g}] (mean STE, root "
               f"stress); below it the estimate at most {100 * FLOOR_ESTIMATE:g} %. Root stress below the delivered "

@@ -67,6 +67,11 @@ LADDER = (10, 15, 30, 45)         # h_contact = m/n; m/30 is gearfem's default (
 TARGET = {"mean_ste": 0.01, "pp_ste": 0.01, "root_stress": 0.03}  # relative
 TARGET_TEXT = "mean STE 1, p-p STE 1, root stress 3"
 COST_CAP = 1800  # Solve/Cost cap [s wall]
+# Mesh draws of the automatic choice: the same input with Mesh/Growth ratio moved about its
+# default 1.2. The grading of the size field changes every non-uniform mesh (nodes, topology)
+# while the sizes the choice sets stay, so the draws show how the choice's levels, cost and
+# true errors vary with mesh-to-mesh scatter.
+DRAW_GROWTH = (1.18, 1.19, 1.21, 1.22)
 QUANTITIES = [("mean_ste", "mean STE"), ("pp_ste", "p-p STE"), ("root_stress", "max root stress"),
               ("p_max", "max p_max")]
 DEMO_TORQUE = 200.0  # inputs/demo.prm's single torque [N m]; its errors against Parker's reference there
@@ -196,11 +201,25 @@ def fixed_rungs(pair):
     return out
 
 
+def draw_name(g):
+    """Run name of the mesh draw at Growth ratio g ("auto_g1.18")."""
+    return f"auto_g{g:g}"
+
+
+def is_auto(name):
+    """The automatic choice: `auto` and its mesh draws."""
+    return name == "auto" or name.startswith("auto_g")
+
+
 def runs(pair):
     """name -> (label, {section: {entry: value}}) of every run of a pair."""
     r = {name: (label, {"Mesh": mesh} if mesh else {}) for name, (label, mesh) in fixed_rungs(pair).items()}
     r["auto"] = (f"Solve/Target = {TARGET_TEXT}, Cost cap {COST_CAP}, no Mesh settings",
                  {"Solve": {"Target": TARGET_TEXT, "Cost cap": str(COST_CAP)}})
+    for g in DRAW_GROWTH:
+        r[draw_name(g)] = (f"as auto, Mesh/Growth ratio {g:g} (a mesh draw; default 1.2), one run",
+                           {"Solve": {"Target": TARGET_TEXT, "Cost cap": str(COST_CAP)},
+                            "Mesh": {"Growth ratio": f"{g:g}"}})
     r["ref"] = (f"reference: {pair['ref_note']}",
                 # Tiled teeth: gmsh meshes a 50-tooth gear with m/60 fillets whole in more than 6 min
                 # (its subdivision fallback), by tiles in under a second; the two agree within
@@ -353,7 +372,7 @@ def draw_designs(seed=SEED, n=N_RANDOM, max_attempts=200):
             else:
                 pair = random_pair("rand0", d)
                 for name, (_, ov) in runs(pair).items():
-                    if name == "auto":  # Solve/Target is the feature under test: not a reason to redraw
+                    if is_auto(name):  # Solve/Target is the feature under test: not a reason to redraw
                         continue
                     rc, eps_g, warns, last = validate(case_text(pair, ov), tmp, name)
                     if rc != 0:
@@ -449,9 +468,14 @@ def read_run(d):
 
 
 # ---------------------------------------------------------------- main
+def single_run(name):
+    """Runs measured once: the references and the mesh draws (their cost is indicative)."""
+    return name == "ref" or name.startswith("auto_g")
+
+
 def weight(pair, name):
     """Rough relative cost of a run, for the ETA only."""
-    if name == "auto":
+    if is_auto(name):
         return 4.0
     if name == "ref":
         return 3.0
@@ -499,7 +523,7 @@ def main():
             continue
         pair = P[key]
         for name, (_, ov) in runs(pair).items():
-            w = weight(pair, name) * (1 if name == "ref" else a.repeat)
+            w = weight(pair, name) * (1 if single_run(name) else a.repeat)
             jobs.append((key, name, os.path.join(OUT, key, name), case_text(pair, ov), w))
     total_w = sum(j[4] for j in jobs)
     done_w, t_all, failed = 0.0, time.time(), 0
@@ -511,7 +535,7 @@ def main():
             print(f"== {key}: {what}", flush=True)
             last_key = key
         t = time.time()
-        msg = run_case(d, text, a.reuse, 1 if name == "ref" else a.repeat)
+        msg = run_case(d, text, a.reuse, 1 if single_run(name) else a.repeat)
         failed += msg.startswith("exit") and not msg.startswith("exit 0")
         if msg == "reused":  # no time spent: not part of the rate
             total_w -= w

@@ -11,6 +11,8 @@
 //   loaded within A..E), and the same model with the fine sizes on teeth -3..3 (refining
 //   only the loaded teeth changes no result; leaving out the early-loaded pair moves the
 //   STE by 6 % at the last position of the pitch);
+// - body_size, unloaded_tooth_size: their rules in closed form, and the Parker pair's ring
+//   (the bore at half the root radius);
 // - fixed_settings: what the input text sets;
 // - run_to_target on 3-tooth sectors: the delivered estimate meets a loose target, and the
 //   delivered level's samples equal a direct solve of that model (solver tolerance).
@@ -308,6 +310,36 @@ end
     }
 }
 
+TEST(ChoiceRules, SizeTheBodyAndTheUnloadedTeethForTheTarget)
+{
+  // The rules of choice/choose.h in closed form: h_body = max(given, min(1.5 m, ring / 6)),
+  // h_tooth = min(h_body, 0.8 m); a set entry is kept.
+  EXPECT_DOUBLE_EQ(choice::body_size(3e-3, 4e-3, 20.5e-3), 20.5e-3 / 6); // a 23-tooth pinion's ring
+  EXPECT_DOUBLE_EQ(choice::body_size(3e-3, 4e-3, 66e-3), 6e-3);          // 1.5 m
+  EXPECT_DOUBLE_EQ(choice::body_size(3e-3, 1e-3, 66e-3), 3e-3);          // never finer than given
+  EXPECT_DOUBLE_EQ(choice::unloaded_tooth_size(6e-3, 4e-3), 3.2e-3);
+  EXPECT_DOUBLE_EQ(choice::unloaded_tooth_size(3e-3, 4.5e-3), 3e-3);
+
+  dealii::ParameterHandler prm;
+  auto in = parse(test::parker_pair(), prm);
+  const double m = 3e-3;
+  // Parker 50/50 m 3, bore at half the root radius: ring r_f / 2 = 35.6 mm, so 1.5 m = 4.5 mm.
+  const double r_f = in.pair->gear(1).radii().root;
+  EXPECT_NEAR(r_f - mesh::inner_radius(in.mesh[0], in.pair->gear(1)), r_f / 2, 1e-12);
+  auto c = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 1"), {});
+  for (const auto &g : c.mesh)
+    {
+      EXPECT_NEAR(g.h_body, 1.5 * m, 1e-12);
+      EXPECT_NEAR(mesh::tooth_size(g, m), 0.8 * m, 1e-12);
+    }
+  choice::FixedSettings fixed;
+  fixed.h_body = fixed.h_tooth = true;
+  in.mesh[0].h_body = in.mesh[1].h_body = 2.5e-3;
+  c = choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 1"), fixed);
+  EXPECT_DOUBLE_EQ(c.mesh[0].h_body, 2.5e-3);
+  EXPECT_DOUBLE_EQ(c.mesh[0].h_tooth, in.mesh[0].h_tooth);
+}
+
 TEST(ChoiceParameters, TellSetEntriesFromDefaults)
 {
   dealii::ParameterHandler prm;
@@ -319,6 +351,13 @@ TEST(ChoiceParameters, TellSetEntriesFromDefaults)
   EXPECT_FALSE(f.h_contact);
   EXPECT_FALSE(f.h_corner);
   EXPECT_FALSE(f.model);
+  EXPECT_FALSE(f.h_body);
+  EXPECT_FALSE(f.h_tooth);
+  dealii::ParameterHandler prm2;
+  parse(test::parker_pair("subsection Mesh\n  set h_body = 3\n  set h_tooth = 0\nend\n"), prm2);
+  const auto g = choice::fixed_settings(prm2);
+  EXPECT_TRUE(g.h_body);
+  EXPECT_TRUE(g.h_tooth);
 }
 
 TEST(ChoiceRun, ProvesALooseTargetOnSectors)
