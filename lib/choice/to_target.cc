@@ -472,68 +472,128 @@ namespace gearfem::choice
     return *q;
   }
 
-  void rescale_pp(TargetOutcome &o, const std::vector<double> &pp_sweep, const std::vector<double> &ripple)
+  SweptPp swept_pp(const Table &sweep, const std::vector<double> &torques)
   {
-    if (o.delivered == 0)
-      return;
-    Level &l = o.levels[o.delivered];
+    SweptPp r;
+    const auto T_col = sweep.column("torque"), roll = sweep.column("roll angle"), ste = sweep.column("STE");
+    for (const double T : torques)
+      {
+        std::vector<double> x, y;
+        for (std::size_t i = 0; i < T_col.size(); ++i)
+          if (T_col[i] == T)
+            x.push_back(roll[i]), y.push_back(ste[i] * 1e-6); // sweep.csv: deg, um
+        if (y.empty())
+          break;
+        r.pp.push_back(*std::max_element(y.begin(), y.end()) - *std::min_element(y.begin(), y.end()));
+        r.ripple.push_back(ste_ripple(x, y));
+      }
+    return r;
+  }
+
+  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept)
+  {
+    const Level &l = o.levels[o.delivered];
     const std::size_t n = o.positions.size();
     const bool estimated = std::abs(l.rho_contact - 1) > 0.2;
     double worst = 0;
-    for (std::size_t t = 0; t < pp_sweep.size() && pp_sweep[t] > 0; ++t)
+    for (std::size_t t = 0; t < swept.pp.size() && swept.pp[t] > 0; ++t)
       {
         double richardson = std::isfinite(l.estimate[1]) ? l.estimate[1] : 0; // carried: as it was
         if (estimated && (t + 1) * n <= l.samples.size())
           {
             const std::vector<solve::EstimatedQuantities> a(l.samples.begin() + t * n, l.samples.begin() + (t + 1) * n),
               b(o.levels.front().samples.begin() + t * n, o.levels.front().samples.begin() + (t + 1) * n);
-            const std::vector<double> pp = {pp_sweep[t]};
+            const std::vector<double> pp = {swept.pp[t]};
             richardson = estimate_relative(a, b, n, l.rho_contact, 1, o.order, &pp, zone_samples)[1];
           }
-        const double rip = t < ripple.size() ? 2 * ripple[t] / pp_sweep[t] : 0;
+        const double rip = t < swept.ripple.size() ? 2 * swept.ripple[t] / swept.pp[t] : 0;
         worst = std::max(worst, richardson + rip);
       }
-    l.estimate[1] = worst;
+    return worst;
+  }
+
+  void rescale_pp(TargetOutcome &o, const SweptPp &swept)
+  {
+    if (o.delivered == 0)
+      return;
+    Level &l      = o.levels[o.delivered];
+    l.estimate[1] = swept_pp_estimate(o, swept);
     o.met = true;
     for (int q = 0; q < n_quantities; ++q)
       if (o.target.tolerance[q] > 0 && !(l.estimate[q] <= o.target.tolerance[q]))
         o.met = false;
   }
 
-  bool refine_after_sweep(TargetOutcome &o, solve::GearContactInput &in, const FixedSettings &fixed,
-                          const TargetOptions &options, double sweep_seconds)
+  namespace
   {
-    o.seconds += sweep_seconds;
-    const double tol = o.target[Quantity::pp_ste];
-    Level &d         = o.levels[o.delivered];
-    if (!(tol > 0) || d.estimate[1] <= tol)
+    /// The factor by which refine_after_sweep refines h_contact for the p-p estimate
+    /// `estimate` after a sweep whose torques take `sweep_seconds` (`spent` of them spent);
+    /// 0 when it would not refine (`why`).
+    double pp_refinement(const TargetOutcome &o, const solve::GearContactInput &in, const FixedSettings &fixed,
+                         const TargetOptions &options, double estimate, double sweep_seconds, std::string &why,
+                         double spent)
+    {
+      const double tol = o.target[Quantity::pp_ste];
+      if (!(tol > 0) || estimate <= tol || o.delivered == 0)
+        return 0;
+      if (fixed.h_contact)
+        {
+          why = "the swept p-p STE needs a finer Mesh/h_contact than the one set in the input";
+          return 0;
+        }
+      if (o.levels.size() - 1 >= static_cast<std::size_t>(options.max_levels))
+        {
+          why = "Solve/Target: " + std::to_string(options.max_levels) + " candidate levels tried";
+          return 0;
+        }
+      const double m    = in.pair->gear(1).parameters().rack.module;
+      const double h    = in.mesh[0].h_contact;
+      const double fc   = h / snap_finer(h / refinement(estimate / tol, o.order), m);
+      const double next = (o.delivered_level().seconds_setup + sweep_seconds) * std::pow(fc, 1.5);
+      if (options.cost_cap > 0 && o.seconds + spent + next > options.cost_cap)
+        {
+          std::ostringstream s;
+          s << std::setprecision(3) << "the swept p-p STE asks for h_contact / " << fc
+            << ", whose run would take about " << next << " s, beyond Solve/Cost cap " << options.cost_cap << " s";
+          why = s.str();
+          return 0;
+        }
+      return fc;
+    }
+  } // namespace
+
+  bool abandon_sweep(const TargetOutcome &o, const solve::GearContactInput &in, const FixedSettings &fixed,
+                     const TargetOptions &options, const SweptPp &swept, std::size_t torques_done,
+                     double contact_seconds)
+  {
+    if (torques_done == 0 || swept.pp.size() < torques_done)
       return false;
-    if (fixed.h_contact)
+    const double full = contact_seconds * double(o.torques.size()) / double(torques_done);
+    std::string why;
+    return pp_refinement(o, in, fixed, options, swept_pp_estimate(o, swept), full, why, contact_seconds) > 0;
+  }
+
+  bool refine_after_sweep(TargetOutcome &o, solve::GearContactInput &in, const FixedSettings &fixed,
+                          const TargetOptions &options, double sweep_seconds, std::size_t torques_swept)
+  {
+    Level &d = o.levels[o.delivered];
+    std::string why;
+    const std::size_t n_t = o.torques.size();
+    const double full =
+      torques_swept > 0 && torques_swept < n_t ? sweep_seconds * double(n_t) / double(torques_swept) : sweep_seconds;
+    const double fc = pp_refinement(o, in, fixed, options, d.estimate[1], full, why, sweep_seconds);
+    o.seconds += sweep_seconds;
+    if (fc == 0)
       {
-        o.stop_reason = "the swept p-p STE needs a finer Mesh/h_contact than the one set in the input";
-        return false;
-      }
-    if (o.levels.size() - 1 >= static_cast<std::size_t>(options.max_levels))
-      {
-        o.stop_reason = "Solve/Target: " + std::to_string(options.max_levels) + " candidate levels tried";
-        return false;
-      }
-    const double m  = in.pair->gear(1).parameters().rack.module;
-    const double h  = in.mesh[0].h_contact;
-    const double fc = h / snap_finer(h / refinement(d.estimate[1] / tol, o.order), m);
-    const double next = (d.seconds_setup + sweep_seconds) * std::pow(fc, 1.5);
-    if (options.cost_cap > 0 && o.seconds + next > options.cost_cap)
-      {
-        std::ostringstream s;
-        s << std::setprecision(3) << "the swept p-p STE asks for h_contact / " << fc << ", whose run would take about "
-          << next << " s, beyond Solve/Cost cap " << options.cost_cap << " s";
-        o.stop_reason = s.str();
+        if (!why.empty())
+          o.stop_reason = why;
         return false;
       }
     if (options.out)
       *options.out << "model choice: the swept p-p STE's estimate " << pc(d.estimate[1]) << " (mesh ripple included) "
                    << "is above the target; refining h_contact by " << fc << " and sweeping again" << std::endl;
-    d.role = "swept";
+    d.role          = "swept";
+    d.swept_torques = torques_swept > 0 ? torques_swept : n_t;
     Sizes cand;
     cand.mesh[0] = in.mesh[0];
     cand.mesh[1] = in.mesh[1];
@@ -563,7 +623,12 @@ namespace gearfem::choice
     for (std::size_t k = 0; k < o.levels.size(); ++k)
       {
         const Level &l = o.levels[k];
-        s << "| " << k + 1 << " | " << l.role << " | " << mm(l.h_contact) << " | " << mm(l.h_fillet) << " | Q"
+        const std::string role =
+          l.swept_torques > 0 && l.swept_torques < o.torques.size() ?
+            l.role + " (stopped after " + std::to_string(l.swept_torques) + " of " + std::to_string(o.torques.size()) +
+              " torques)" :
+            l.role;
+        s << "| " << k + 1 << " | " << role << " | " << mm(l.h_contact) << " | " << mm(l.h_fillet) << " | Q"
           << l.degree << " | " << l.dofs << " | " << std::fixed << std::setprecision(1) << l.seconds_setup << " | "
           << l.seconds_samples << std::defaultfloat << (l.subdivided ? " (subdivided mesh)" : "")
           << (l.remeshed ? " (remeshed " + std::to_string(l.remeshed) + "x)" : "") << " |";
@@ -614,7 +679,7 @@ namespace gearfem::choice
         s << (k ? "," : "") << "\n      {\"role\": \"" << l.role << "\", \"h_contact_mm\": " << json(l.h_contact * 1e3)
           << ", \"h_fillet_mm\": " << json(l.h_fillet * 1e3) << ", \"degree\": " << l.degree
           << ", \"dofs\": " << l.dofs << ", \"subdivided\": " << (l.subdivided ? "true" : "false")
-          << ", \"remeshed\": " << l.remeshed
+          << ", \"remeshed\": " << l.remeshed << ", \"swept_torques\": " << l.swept_torques
           << ", \"setup_seconds\": " << json(l.seconds_setup)
           << ", \"samples_seconds\": " << json(l.seconds_samples) << ", \"estimate\": " << quantities(l.estimate)
           << ", \"root_stress_resolution\": " << json(l.fillet_resolution)

@@ -29,7 +29,8 @@ namespace gearfem::commands
 {
   solve::SolveRunResult run_full_fe(contact::GearContactModel &model, const solve::GearContactInput &in,
                                     const post::PostOptions &post, const RunContext &ctx, double setup_seconds,
-                                    double cpu_setup, double mesh_seconds, const std::string &label)
+                                    double cpu_setup, double mesh_seconds, const std::string &label,
+                                    const std::function<bool(std::size_t, const Table &, double)> &torque_done)
   {
     std::ostream &out = *ctx.out;
     for (int i = 1; i <= 2; ++i)
@@ -45,7 +46,13 @@ namespace gearfem::commands
     opt.resume     = ctx.resume;
     opt.out        = &out;
     opt.post       = post;
+    opt.torque_done = torque_done;
     const solve::SolveRunResult r = solve::run_solve(model, in, opt);
+    if (r.stopped)
+      {
+        out << "sweep stopped after " << r.solved << " positions: its p-p STE already asks for a finer level\n";
+        return r;
+      }
     if (in.solve.plots && r.results.sweep.n_rows() > 0)
       run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
     if (!r.failure.empty())
@@ -153,24 +160,18 @@ namespace gearfem::commands
               m.erase(std::remove_if(m.begin(), m.end(), [](const auto &e) { return e.first == "cost" || e.first == "friction"; }),
                       m.end());
             }
-          const double cpu_setup        = process_cpu_seconds();
+          const double cpu_setup = process_cpu_seconds();
+          // The p-p check after each torque: a sweep the torques done already condemn stops.
+          const auto check = [&](std::size_t t, const Table &sweep, double seconds) {
+            return !choice::abandon_sweep(o, in, fixed, options, choice::swept_pp(sweep, in.solve.torques), t + 1,
+                                          seconds);
+          };
           const solve::SolveRunResult r = run_full_fe(*o.model, in, post_options, ctx, o.model->setup_seconds(),
-                                                      cpu_setup, o.model->mesh_seconds(), "");
-          // The p-p estimate against the swept p-p and the swept mesh ripple of each torque.
-          const auto &sw = r.results.sweep;
-          const auto T_col = sw.column("torque"), roll = sw.column("roll angle"), ste = sw.column("STE");
-          std::vector<double> pp, ripple;
-          for (const double T : in.solve.torques)
-            {
-              std::vector<double> x, y;
-              for (std::size_t i = 0; i < T_col.size(); ++i)
-                if (T_col[i] == T)
-                  x.push_back(roll[i]), y.push_back(ste[i] * 1e-6); // sweep.csv: deg, um
-              pp.push_back(y.empty() ? 0.0 : *std::max_element(y.begin(), y.end()) - *std::min_element(y.begin(), y.end()));
-              ripple.push_back(choice::ste_ripple(x, y));
-            }
-          choice::rescale_pp(o, pp, ripple);
-          if (!choice::refine_after_sweep(o, in, fixed, options, r.seconds.at("contact") + r.seconds.at("post")))
+                                                      cpu_setup, o.model->mesh_seconds(), "", check);
+          const choice::SweptPp swept = choice::swept_pp(r.results.sweep, in.solve.torques);
+          choice::rescale_pp(o, swept);
+          if (!choice::refine_after_sweep(o, in, fixed, options, r.seconds.at("contact") + r.seconds.at("post"),
+                                          r.stopped ? swept.pp.size() : 0))
             break;
         }
       out << "\n" << choice::model_choice_summary(o);

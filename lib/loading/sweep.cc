@@ -107,6 +107,12 @@ namespace gearfem::loading
         for (auto *o : observers)
           o->finished(p, s);
         ++outcome.finished;
+        for (const auto *o : observers)
+          if (o->stop_requested())
+            {
+              outcome.stopped = true;
+              return outcome;
+            }
         prev      = std::move(s.solution);
         have_prev = true;
       }

@@ -40,6 +40,10 @@ namespace gearfem::loading
     /// A converged position; observers run in the order given. The state is the warm start
     /// of the next position of the same torque.
     virtual void finished(const SweepPoint &p, const contact::ContactState &s) = 0;
+    /// Asked after every point has reached all observers: true ends the sweep there
+    /// (SweepOutcome::stopped), e.g. when the torques done already show that the run will be
+    /// discarded.
+    virtual bool stop_requested() const { return false; }
   };
 
   /// Where a sweep starts: the first point to solve and the warm start it would have had.
@@ -53,6 +57,7 @@ namespace gearfem::loading
   struct SweepOutcome
   {
     std::size_t finished = 0; ///< points finished in this call
+    bool stopped         = false; ///< an observer asked to stop (not a failure)
     std::string failure;      ///< empty, or the SolverError message of the point that failed
     SweepPoint failed_point;  ///< valid when failure is not empty
   };

@@ -12,4 +12,12 @@ namespace gearfem::post
     for (auto *o : observers_)
       o->finished(p, s, r);
   }
+
+  bool EvaluatingObserver::stop_requested() const
+  {
+    for (const auto *o : observers_)
+      if (o->stop_requested())
+        return true;
+    return false;
+  }
 } // namespace gearfem::post

@@ -20,6 +20,8 @@ namespace gearfem::post
     /// An evaluated position. `r` may be modified (e.g. its fields released) by an observer
     /// that has used them; observers run in the order given.
     virtual void finished(const loading::SweepPoint &p, const contact::ContactState &s, PositionResult &r) = 0;
+    /// True ends the sweep after this point (loading::SweepObserver::stop_requested).
+    virtual bool stop_requested() const { return false; }
   };
 
   class EvaluatingObserver : public loading::SweepObserver
@@ -29,6 +31,7 @@ namespace gearfem::post
       : evaluator_(evaluator), observers_(std::move(observers))
     {}
     void finished(const loading::SweepPoint &p, const contact::ContactState &s) override;
+    bool stop_requested() const override;
 
   private:
     Evaluator &evaluator_;

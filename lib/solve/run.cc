@@ -165,6 +165,32 @@ namespace gearfem::solve
       Progress progress_;
     };
 
+    /// Calls SolveRunOptions::torque_done after the last position of each torque but the last.
+    class TorqueDoneObserver : public PositionObserver
+    {
+    public:
+      TorqueDoneObserver(const SolveRunOptions &options, const io::SolveResults &t,
+                         const contact::GearContactModel &model, std::size_t n_positions, double contact_before)
+        : options_(options), t_(t), model_(model), n_positions_(n_positions), contact_before_(contact_before)
+      {}
+      void finished(const loading::SweepPoint &p, const contact::ContactState &, PositionResult &) override
+      {
+        if (!options_.torque_done || p.position_index + 1 != n_positions_ || p.index + 1 == p.total)
+          return;
+        const double seconds = contact::section_seconds(model_.timer(), "contact") - contact_before_;
+        stop_ = !options_.torque_done(p.torque_index, t_.sweep, seconds);
+      }
+      bool stop_requested() const override { return stop_; }
+
+    private:
+      const SolveRunOptions &options_;
+      const io::SolveResults &t_;
+      const contact::GearContactModel &model_;
+      std::size_t n_positions_;
+      double contact_before_;
+      bool stop_ = false;
+    };
+
     /// Replay the journal into the tables and the PVD records; returns where to start.
     loading::SweepStart resume_from(const std::filesystem::path &journal, const io::JournalHeader &expected,
                                     io::SolveResults &t, VtuObserver &vtu,
@@ -318,9 +344,11 @@ namespace gearfem::solve
     JournalObserver journal_observer(journal, tables, vtu);
     ProgressObserver progress(options.out, plan.size(), start.next);
     Evaluator evaluator(model, post_options);
-    EvaluatingObserver evaluate(evaluator, {&tables, &vtu, &journal_observer, &progress});
+    TorqueDoneObserver torque_done(options, t, model, plan.positions.size(), contact_before);
+    EvaluatingObserver evaluate(evaluator, {&tables, &vtu, &journal_observer, &progress, &torque_done});
     const auto outcome = loading::run_sweep(model, plan, {&evaluate}, start);
     run.solved     = outcome.finished;
+    run.stopped    = outcome.stopped;
     run.pinion_speed = in.friction.pinion_speed;
     run.failure    = outcome.failure;
     run.unresolved = count_unresolved(t, options.post.unresolved_share);
@@ -335,7 +363,7 @@ namespace gearfem::solve
           fem::write_pvd(options.output_dir / n.str(), records);
         }
     if (run.failure.empty())
-      std::filesystem::remove(journal); // complete: nothing to resume
+      std::filesystem::remove(journal); // complete or stopped by the caller: nothing to resume
     scope.stop();
     run.seconds = {{"contact", contact::section_seconds(model.timer(), "contact") - contact_before},
                    {"post", contact::section_seconds(evaluator.timer(), "post")},

@@ -11,6 +11,7 @@
 #include "post/position.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <ostream>
 #include <string>
@@ -32,6 +33,11 @@ namespace gearfem::solve
     bool resume = false;
     std::ostream *out = nullptr; ///< progress lines; null: silent
     post::PostOptions post;            ///< thresholds of the evaluation (`Post` section)
+    /// Called when the last position of torque `torque_index` (in the order of Solve/Torques)
+    /// is evaluated, with the sweep table so far and the wall time of the solves so far [s];
+    /// false ends the sweep there (SolveRunResult::stopped): a caller that can already tell
+    /// it will discard the run (Solve/Target's p-p check) saves the other torques.
+    std::function<bool(std::size_t torque_index, const Table &sweep, double contact_seconds)> torque_done;
   };
 
   struct SolveRunResult
@@ -40,6 +46,9 @@ namespace gearfem::solve
     std::size_t resumed = 0;          ///< positions taken from the journal
     std::size_t solved  = 0;          ///< positions solved in this call
     std::string failure;              ///< the SolverError message, empty on success
+    /// SolveRunOptions::torque_done ended the sweep: the tables hold the torques before it
+    /// (written, the journal removed); not a failure.
+    bool stopped = false;
     /// Per torque: unresolved loaded Hertzian pairs (below PostOptions::min_patch_nodes,
     /// share above PostOptions::unresolved_share).
     std::map<double, int> unresolved;

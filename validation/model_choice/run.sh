@@ -7,7 +7,7 @@
 # 50 m, 100 m N/mm), errors the largest over the torques; and the demo (inputs/demo.prm with a
 # target, 200 N m) against the Parker reference at 200 N m; four mesh draws of each pair's
 # auto input (Mesh/Growth ratio 1.18-1.22). 5-12 min on the 2-core
-# machine (277 s measured for the 67 runs when idle).
+# machine (278 s measured for the 67 runs when idle).
 #   run.sh              draw the designs, run every model (results/<pair>/<run>/), check
 #   run.sh --reuse      keep the runs finished by an earlier run with the same input
 #   run.sh --draw-only  only draw and validate the random designs (results/designs.json)

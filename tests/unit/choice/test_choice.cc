@@ -14,6 +14,9 @@
 // - body_size, unloaded_tooth_size: their rules in closed form, and the Parker pair's ring
 //   (the bore at half the root radius);
 // - fixed_settings: what the input text sets;
+// - swept_pp, swept_pp_estimate, abandon_sweep: the p-p and ripple of a sweep table and the
+//   p-p estimate in closed form; the sweep stops only where refine_after_sweep's rules
+//   (h_contact set, levels spent, cost cap) let a finer level follow;
 // - run_to_target on 3-tooth sectors: the delivered estimate meets a loose target, and the
 //   delivered level's samples equal a direct solve of that model (solver tolerance).
 #include "choice/parameters.h"
@@ -410,4 +413,90 @@ TEST(ChoiceRipple, ZeroOnACubicAndEightThirdsOfAnAlternatingRipple)
   EXPECT_NEAR(choice::ste_ripple(x, smooth), 0, 1e-18);
   EXPECT_NEAR(choice::ste_ripple(x, rippled), 8 * d / 3, 1e-6 * d);
   EXPECT_EQ(choice::ste_ripple({0, 1, 2}, {1, 2, 3}), 0);
+}
+
+TEST(ChoiceSweep, SweptPpIsEachTorquesRangeUpToTheFirstTorqueNotSwept)
+{
+  // sweep.csv units: deg, um; SweptPp in m. Torque 200 has rows, 300 none (a stopped sweep).
+  Table t;
+  t.add_column("torque", "N m");
+  t.add_column("roll angle", "deg");
+  t.add_column("STE", "um");
+  for (const double T : {100.0, 200.0})
+    for (int i = 0; i < 8; ++i)
+      t.add_row({T, -3.0 + i, T / 100 * (4 + (i == 5 ? 1.5 : 0.0) - 0.1 * i)});
+  const auto s = choice::swept_pp(t, {100, 200, 300});
+  ASSERT_EQ(s.pp.size(), 2u);
+  ASSERT_EQ(s.ripple.size(), 2u);
+  // max 4 + 1.5 - 0.5 = 5.0 at i = 5, min 4 - 0.7 = 3.3 at i = 7 (times T/100).
+  EXPECT_NEAR(s.pp[0], 1.7e-6, 1e-15);
+  EXPECT_NEAR(s.pp[1], 3.4e-6, 1e-15);
+  std::vector<double> x, y;
+  for (int i = 0; i < 8; ++i)
+    x.push_back(-3.0 + i), y.push_back(2 * (4 + (i == 5 ? 1.5 : 0.0) - 0.1 * i) * 1e-6);
+  EXPECT_NEAR(s.ripple[1], choice::ste_ripple(x, y), 1e-18);
+  EXPECT_TRUE(choice::swept_pp(t, {300, 100}).pp.empty());
+}
+
+TEST(ChoiceSweep, AbandonsASweepOnlyWhereTheRefinementFollows)
+{
+  // A delivered level against its companion (rho 2, order 2: e = (b - a) / (1 - 4)), three
+  // torques, four samples each. At the zone samples 0 and 2 the companion differs by 0 and
+  // 0.06 um: the Richardson part of the p-p error is 0.02 um; with a swept p-p of 4 um and a
+  // ripple r, the estimate is (0.02 um + 2 r) / 4 um (closed form of swept_pp_estimate).
+  dealii::ParameterHandler prm;
+  auto in = parse(test::parker_pair("subsection Solve\n  set Torques = 100, 200, 300\nend\n"), prm);
+  choice::TargetOutcome o;
+  o.target    = choice::parse_target("p-p STE 1");
+  o.torques   = {100, 200, 300};
+  o.positions = {0, 0.01, 0.02, 0.03};
+  choice::Level companion, delivered;
+  for (int t = 0; t < 3; ++t)
+    for (int i = 0; i < 4; ++i)
+      {
+        solve::EstimatedQuantities q;
+        q.ste = (4 + (i == 2 ? 3.0 : 0.0)) * 1e-6;
+        delivered.samples.push_back(q);
+        q.ste += i == 2 ? 0.06e-6 : 0;
+        companion.samples.push_back(q);
+      }
+  companion.role = "companion";
+  delivered.role = "delivered";
+  delivered.rho_contact = 2;
+  delivered.estimate.fill(std::nan(""));
+  delivered.seconds_setup = 0.5;
+  o.levels    = {companion, delivered};
+  o.delivered = 1;
+  in.mesh[0].h_contact = in.mesh[1].h_contact = 0.1e-3;
+  const choice::FixedSettings fixed{};
+  choice::TargetOptions options;
+
+  const choice::SweptPp small{{4e-6}, {0.005e-6}}, large{{4e-6}, {0.02e-6}};
+  EXPECT_NEAR(choice::swept_pp_estimate(o, small), (0.02 + 0.01) / 4, 1e-9);
+  EXPECT_NEAR(choice::swept_pp_estimate(o, large), (0.02 + 0.04) / 4, 1e-9);
+  // 0.75 % meets the 1 % target: the sweep goes on; 1.5 % does not: it stops.
+  EXPECT_FALSE(choice::abandon_sweep(o, in, fixed, options, small, 1, 0.3));
+  EXPECT_TRUE(choice::abandon_sweep(o, in, fixed, options, large, 1, 0.3));
+  // Where the refinement would not follow, the sweep is not stopped: h_contact set in the
+  // input, the levels spent, the cost cap exceeded: 1.5 % asks for h / 1.47, the rung m/45
+  // (h / 1.5), whose run takes about (0.5 s + 3 x 0.3 s) x 1.5^1.5 = 2.57 s after 0.3 s spent.
+  choice::FixedSettings set_h = fixed;
+  set_h.h_contact = true;
+  EXPECT_FALSE(choice::abandon_sweep(o, in, set_h, options, large, 1, 0.3));
+  choice::TargetOptions spent = options;
+  spent.max_levels = 1;
+  EXPECT_FALSE(choice::abandon_sweep(o, in, fixed, spent, large, 1, 0.3));
+  choice::TargetOptions capped = options;
+  capped.cost_cap = 2.0;
+  EXPECT_FALSE(choice::abandon_sweep(o, in, fixed, capped, large, 1, 0.3));
+  capped.cost_cap = 3.5;
+  EXPECT_TRUE(choice::abandon_sweep(o, in, fixed, capped, large, 1, 0.3));
+  // A torque not yet swept gives no verdict.
+  EXPECT_FALSE(choice::abandon_sweep(o, in, fixed, options, large, 2, 0.3));
+  // rescale_pp takes the same estimate and updates `met`.
+  choice::rescale_pp(o, large);
+  EXPECT_NEAR(o.delivered_level().estimate[1], 0.015, 1e-9);
+  EXPECT_FALSE(o.met);
+  choice::rescale_pp(o, small);
+  EXPECT_TRUE(o.met);
 }
