@@ -518,7 +518,13 @@ namespace gearfem::choice
       return;
     Level &l      = o.levels[o.delivered];
     l.estimate[1] = swept_pp_estimate(o, swept);
-    o.met = true;
+    update_met(o);
+  }
+
+  void update_met(TargetOutcome &o)
+  {
+    const Level &l = o.levels[o.delivered];
+    o.met          = true;
     for (int q = 0; q < n_quantities; ++q)
       if (o.target.tolerance[q] > 0 && !(l.estimate[q] <= o.target.tolerance[q]))
         o.met = false;
@@ -646,6 +652,15 @@ namespace gearfem::choice
         s << " " << AccuracyTarget::names()[q] << " " << pc(d.estimate[q]) << " / " << pc(o.target.tolerance[q])
           << (d.estimate[q] <= o.target.tolerance[q] ? "" : " (above)") << ";";
     s << " choice " << std::fixed << std::setprecision(1) << o.seconds << " s.\n";
+    s << "Sweep: " << o.route << (o.route_why.empty() ? "" : " (" + o.route_why + ")") << ".";
+    if (std::isfinite(o.condensation[0]))
+      {
+        s << " The condensation's error measured on the run (full FE at the largest and smallest STE of the "
+             "lowest and highest torque), included in the estimates above:";
+        for (int q = 0; q < n_quantities; ++q)
+          s << " " << AccuracyTarget::names()[q] << " " << pc(o.condensation[q]) << ";";
+      }
+    s << "\n";
     return s.str();
   }
 
@@ -685,16 +700,18 @@ namespace gearfem::choice
           << ", \"root_stress_resolution\": " << json(l.fillet_resolution)
           << "}";
       }
+    auto escaped = [](const std::string &r) {
+      std::string esc;
+      for (const char c : r)
+        esc += c == '"' ? std::string("\\\"") : std::string(1, c);
+      return esc;
+    };
     s << "\n    ],\n    \"reasons\": [";
     for (std::size_t k = 0; k < o.choice.reasons.size(); ++k)
-      {
-        std::string r = o.choice.reasons[k];
-        std::string esc;
-        for (const char c : r)
-          esc += c == '"' ? std::string("\\\"") : std::string(1, c);
-        s << (k ? ", " : "") << "\n      \"" << esc << "\"";
-      }
-    s << "\n    ],\n    \"seconds\": " << json(o.seconds) << "\n  }";
+      s << (k ? ", " : "") << "\n      \"" << escaped(o.choice.reasons[k]) << "\"";
+    s << "\n    ],\n    \"route\": {\"name\": \"" << o.route << "\", \"why\": \"" << escaped(o.route_why)
+      << "\", \"condensation_error\": " << quantities(o.condensation) << "}";
+    s << ",\n    \"seconds\": " << json(o.seconds) << "\n  }";
     return s.str();
   }
 } // namespace gearfem::choice

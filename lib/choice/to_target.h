@@ -20,6 +20,7 @@
 #include "solve/input.h"
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -79,6 +80,12 @@ namespace gearfem::choice
     std::vector<double> torques;
     /// The delivered model, built; the input's mesh and FE degree are set to it.
     std::unique_ptr<contact::GearContactModel> model;
+    /// The route of the delivered sweep (choice/route.h): "full FE" or "condensed cycle", why.
+    std::string route = "full FE", route_why;
+    /// The condensation's error measured on the run (condensed route; NaN: none), already
+    /// included in the delivered level's estimate.
+    std::array<double, n_quantities> condensation{};
+    TargetOutcome() { condensation.fill(std::numeric_limits<double>::quiet_NaN()); }
     const Level &delivered_level() const { return levels.at(delivered); }
   };
 
@@ -150,6 +157,8 @@ namespace gearfem::choice
   /// With the sweep done: the delivered level's p-p estimate becomes swept_pp_estimate.
   /// Updates `met`.
   void rescale_pp(TargetOutcome &o, const SweptPp &swept);
+  /// `met`: every asked quantity's estimate of the delivered level within its tolerance.
+  void update_met(TargetOutcome &o);
 
   /// While the sweep runs, after torque `torques_done - 1` (`contact_seconds` of solves so
   /// far): true when the p-p estimate of the torques swept already is above the target and

@@ -16,11 +16,15 @@
 #include "commands/solve_hunting.h"
 #include "tolerance/parameters.h"
 #include "choice/parameters.h"
+#include "choice/route.h"
 #include "choice/to_target.h"
+#include "condensed/cycle.h"
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <chrono>
+#include <limits>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -100,6 +104,37 @@ namespace gearfem::commands
       tolerance::declare_deviation_parameters(prm);
     }
 
+    /// A run on a condensed cycle as `gearfem solve` reports it: plots, a failure with the
+    /// finished positions kept (`throw_failure`), the summary, the run record's `cost`.
+    solve::SolveRunResult report_condensed(solve::SolveRunResult r, const solve::GearContactInput &in,
+                                           const RunContext &ctx, double cpu_setup, unsigned int dofs,
+                                           bool throw_failure, double build_seconds = 0)
+    {
+      std::ostream &out = *ctx.out;
+      if (!r.failure.empty() && !throw_failure)
+        return r;
+      if (in.solve.plots && r.results.sweep.n_rows() > 0)
+        run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
+      if (!r.failure.empty())
+        throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
+                          " completed positions are saved in " + ctx.output_dir.string());
+      out << "\n" << solve::summary_table(r, in.meshing(), in.solve.torques) << "time: contact "
+          << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
+          << r.seconds.at("output") << " s (" << r.results.sweep.n_rows() << " positions on the condensed cycle)\n";
+      if (ctx.outcome)
+        {
+          std::ostringstream cost;
+          cost << std::setprecision(6) << "{\"condensed\": true, \"build_seconds\": " << build_seconds
+               << ", \"contact_seconds\": " << r.seconds.at("contact") << ", \"post_seconds\": " << r.seconds.at("post")
+               << ", \"output_seconds\": " << r.seconds.at("output") << ", \"positions\": " << r.results.sweep.n_rows()
+               << ", \"dofs\": " << dofs << ", \"peak_memory_mb\": " << peak_memory_mb()
+               << ", \"cpu_setup_seconds\": " << cpu_setup << ", \"cpu_sweep_seconds\": " << process_cpu_seconds() - cpu_setup
+               << "}";
+          ctx.outcome->record_members.emplace_back("cost", cost.str());
+        }
+      return r;
+    }
+
     /// `--condensed FILE`: the same run on a stored condensed cycle.
     void run_on_cycle(const solve::GearContactInput &in, const post::PostOptions &post_options, const RunContext &ctx)
     {
@@ -116,25 +151,56 @@ namespace gearfem::commands
       opt.input_name = ctx.input_file.filename().string();
       opt.out        = &out;
       opt.post       = post_options;
-      const solve::SolveRunResult r = condensed::run_condensed(cycle, in, opt);
-      if (in.solve.plots && r.results.sweep.n_rows() > 0)
-        run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
-      if (!r.failure.empty())
-        throw SolverError(r.failure + "\n  the " + std::to_string(r.results.sweep.n_rows()) +
-                          " completed positions are saved in " + ctx.output_dir.string());
-      out << "\n" << solve::summary_table(r, in.meshing(), in.solve.torques) << "time: contact "
-          << r.seconds.at("contact") << " s, post-processing " << r.seconds.at("post") << " s, output "
-          << r.seconds.at("output") << " s (" << r.results.sweep.n_rows() << " positions on the condensed cycle)\n";
-      if (ctx.outcome)
+      report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs, true);
+    }
+
+    /// Solve/Target's condensed route (choice::plan_route): the cycle of the delivered model,
+    /// built once and re-solved at every torque, into `r`. False, with the reason in
+    /// o.route_why, where the full FE sweep runs instead (not planned, or the build or a
+    /// re-solve failed: the full FE then decides).
+    bool sweep_on_cycle(choice::TargetOutcome &o, const solve::GearContactInput &in,
+                        const post::PostOptions &post_options, const RunContext &ctx, double cpu_setup,
+                        solve::SolveRunResult &r)
+    {
+      std::ostream &out            = *ctx.out;
+      const choice::RoutePlan plan = choice::plan_route(in, ctx.resume);
+      o.route                      = "full FE";
+      o.route_why                  = plan.why;
+      o.condensation.fill(std::numeric_limits<double>::quiet_NaN());
+      if (!plan.condensed)
+        return false;
+      out << "model choice: " << plan.why << std::endl;
+      std::string failure;
+      try
         {
-          std::ostringstream cost;
-          cost << std::setprecision(6) << "{\"condensed\": true, \"contact_seconds\": " << r.seconds.at("contact")
-               << ", \"post_seconds\": " << r.seconds.at("post") << ", \"output_seconds\": " << r.seconds.at("output")
-               << ", \"positions\": " << r.results.sweep.n_rows() << ", \"dofs\": " << cycle.dofs
-               << ", \"peak_memory_mb\": " << peak_memory_mb() << ", \"cpu_setup_seconds\": " << cpu_setup
-               << ", \"cpu_sweep_seconds\": " << process_cpu_seconds() - cpu_setup << "}";
-          ctx.outcome->record_members.emplace_back("cost", cost.str());
+          const auto t0 = std::chrono::steady_clock::now();
+          const condensed::CondensedCycle cycle =
+            condensed::build_cycle(*o.model, in, plan.build_torque, plan.lo, plan.hi, &out);
+          const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          solve::SolveRunOptions opt;
+          opt.output_dir = ctx.output_dir;
+          opt.input_name = ctx.input_file.filename().string();
+          opt.out        = &out;
+          opt.post       = post_options;
+          r = report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs, false, build);
+          failure = r.failure;
         }
+      catch (const SolverError &e)
+        {
+          failure = e.what();
+        }
+      catch (const InputError &e)
+        {
+          failure = e.what();
+        }
+      if (failure.empty())
+        {
+          o.route = "condensed cycle";
+          return true;
+        }
+      o.route_why = "the condensed route failed (" + failure + "); the full FE sweep instead";
+      out << "model choice: " << o.route_why << std::endl;
+      return false;
     }
 
     /// `Solve/Target`: choose the model, prove it at sample positions, refine, then sweep the
@@ -161,17 +227,27 @@ namespace gearfem::commands
                       m.end());
             }
           const double cpu_setup = process_cpu_seconds();
-          // The p-p check after each torque: a sweep the torques done already condemn stops.
-          const auto check = [&](std::size_t t, const Table &sweep, double seconds) {
-            return !choice::abandon_sweep(o, in, fixed, options, choice::swept_pp(sweep, in.solve.torques), t + 1,
-                                          seconds);
-          };
-          const solve::SolveRunResult r = run_full_fe(*o.model, in, post_options, ctx, o.model->setup_seconds(),
-                                                      cpu_setup, o.model->mesh_seconds(), "", check);
+          const auto t0          = std::chrono::steady_clock::now();
+          solve::SolveRunResult r;
+          const bool on_cycle = sweep_on_cycle(o, in, post_options, ctx, cpu_setup, r);
+          if (!on_cycle)
+            {
+              // The p-p check after each torque: a sweep the torques done already condemn stops.
+              const auto check = [&](std::size_t t, const Table &sweep, double seconds) {
+                return !choice::abandon_sweep(o, in, fixed, options, choice::swept_pp(sweep, in.solve.torques), t + 1,
+                                              seconds);
+              };
+              r = run_full_fe(*o.model, in, post_options, ctx, o.model->setup_seconds(), cpu_setup,
+                              o.model->mesh_seconds(), "", check);
+            }
           const choice::SweptPp swept = choice::swept_pp(r.results.sweep, in.solve.torques);
           choice::rescale_pp(o, swept);
-          if (!choice::refine_after_sweep(o, in, fixed, options, r.seconds.at("contact") + r.seconds.at("post"),
-                                          r.stopped ? swept.pp.size() : 0))
+          if (on_cycle)
+            choice::add_condensation_error(o, choice::condensation_error(*o.model, in, r.results.sweep, post_options));
+          const double seconds =
+            on_cycle ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() :
+                       r.seconds.at("contact") + r.seconds.at("post");
+          if (!choice::refine_after_sweep(o, in, fixed, options, seconds, r.stopped ? swept.pp.size() : 0))
             break;
         }
       out << "\n" << choice::model_choice_summary(o);

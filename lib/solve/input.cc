@@ -75,6 +75,12 @@ namespace gearfem::solve
     prm.declare_entry("Cost cap", "1800", Double(),
                       "With a Target: the wall time the choice may spend (levels, samples and the "
                       "predicted sweep); 0: none. Units: s. Allowed: >= 0.");
+    prm.declare_entry("Target route", "auto", Selection("auto|full FE"),
+                      "With a Target: how the delivered model sweeps the torques. auto: on one condensed "
+                      "cycle of that model where the torques are enough to pay for its build (8 or more "
+                      "over a torque range within 4:1, docs/model-choice.md), with the condensation's error "
+                      "measured on the run and added to the estimates; else the full FE sweep. full FE: "
+                      "always the full FE sweep.");
     prm.leave_subsection();
   }
 
@@ -110,6 +116,7 @@ namespace gearfem::solve
     p.error_estimate = params::get_bool(prm, "Error estimate");
     p.target         = prm.get("Target");
     p.cost_cap       = params::get_double(prm, "Cost cap");
+    p.target_route_auto = prm.get("Target route") == "auto";
     prm.leave_subsection();
     require_range("Solve/Cost cap", p.cost_cap, 0.0, 1e7, "s");
 

@@ -59,6 +59,8 @@ namespace gearfem::solve
     /// as given), and `Cost cap` [s] of the automatic choice (0: none).
     std::string target = "none";
     double cost_cap    = 1800;
+    /// `Target route`: auto (the condensed cycle where it pays, choice/route.h) or full FE.
+    bool target_route_auto = true;
   };
 
   /// Everything `gearfem solve` reads, parsed and checked.

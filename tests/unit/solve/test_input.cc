@@ -4,6 +4,7 @@
 // not) and the contact requirement of a sector (teeth -1, 0, 1 share the mesh cycle).
 #include "base/errors.h"
 #include "common/fixtures.h"
+#include "common/solve_input.h"
 #include "mesh/gear_mesh.h"
 #include "solve/input.h"
 
@@ -27,13 +28,7 @@ subsection Mesh
 end
 )";
 
-  solve::GearContactInput parse(const std::string &text)
-  {
-    dealii::ParameterHandler prm;
-    solve::declare_gear_contact_input(prm);
-    prm.parse_input_from_string(text);
-    return solve::parse_gear_contact_input(prm);
-  }
+  solve::GearContactInput parse(const std::string &text) { return test::parse_solve_input(text); }
 
   std::string key(const std::string &extra) { return solve::model_key(parse(test::parker_pair(sector + extra))); }
 } // namespace

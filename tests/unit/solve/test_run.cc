@@ -4,6 +4,7 @@
 // uninterrupted sweep, since each torque starts cold), and the journal rule (removed unless a
 // solver failure leaves something to resume).
 #include "common/fixtures.h"
+#include "common/solve_input.h"
 #include "solve/input.h"
 #include "solve/run.h"
 
@@ -18,13 +19,7 @@ using namespace gearfem;
 
 namespace
 {
-  solve::GearContactInput parse(const std::string &text)
-  {
-    dealii::ParameterHandler prm;
-    solve::declare_gear_contact_input(prm);
-    prm.parse_input_from_string(text);
-    return solve::parse_gear_contact_input(prm);
-  }
+  solve::GearContactInput parse(const std::string &text) { return test::parse_solve_input(text); }
 
   const std::string sector = R"(
 subsection Mesh

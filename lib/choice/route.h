@@ -1,0 +1,56 @@
+#pragma once
+// The route of the delivered sweep under `Solve/Target`: the full FE sweep of the delivered
+// model, or, when the run repeats the cycle at enough torques for the build to pay, the
+// condensed cycle of that same model (condensed/cycle.h), built once over the torque range and
+// re-solved at every torque. The condensation's own error is then measured on the run, not
+// assumed: full FE solves on the delivered model where the swept quantities peak (largest and
+// smallest STE, largest root stresses and p_max) at the lowest and the highest torque (the
+// range ends, where the condensation is farthest from the loads it was solved at), compared
+// with the cycle's values there, and added to the delivered level's estimate.
+#include "base/table.h"
+#include "choice/to_target.h"
+#include "post/position.h"
+#include "solve/input.h"
+
+#include <array>
+#include <string>
+
+namespace gearfem::choice
+{
+  /// Measured on the Parker pair at m/45 (157 000 DoFs, 40 positions): the build of a cycle
+  /// costs about 3.3 full torque sweeps per scene of a position (a solve and its condensation
+  /// to some 380 candidates), and each position holds about one scene more than the parts its
+  /// torque range is split into (100-340 N m: 82 scenes, 3.34 s, 6.8 sweeps of 0.49 s; 50-500
+  /// N m: 123 scenes, 4.41 s, 9.3 sweeps); a re-solve costs about 2 % of a sweep.
+  inline constexpr double build_sweeps_per_scene = 3.3;
+
+  struct RoutePlan
+  {
+    bool condensed = false;
+    double lo = 0, hi = 0, build_torque = 0; ///< torque range and build torque [N m]
+    double predicted_build_sweeps = 0;       ///< the build's predicted cost in full torque sweeps
+    std::string why;                         ///< the reason, in words
+  };
+
+  /// The full FE sweep where `Solve/Target route = full FE`; else the condensed route where
+  /// the torques of `in` number at least 1.2 times the predicted cost of the build in torque
+  /// sweeps (scenes per position: 1 + the parts of [lo, hi] at `scene_ratio`), the input is
+  /// condensable (condensed::check_condensable: no tip relief meshed as geometry, no friction,
+  /// an external pair), asks for no VTU (the cycle keeps no fields) and is not resumed.
+  RoutePlan plan_route(const solve::GearContactInput &in, bool resume, double scene_ratio = 4.0);
+
+  /// The condensation's error on the run: full FE solves on `model` (the delivered model the
+  /// cycle was built from) at the lowest and the highest torque of `sweep` (the condensed run's
+  /// sweep table), at the rows of its largest and smallest STE, its largest root stress of each
+  /// gear and its largest p_max, against the sweep's values there: per quantity (Quantity
+  /// order), the mean STE max |d| / mean STE of the two STE rows, the p-p STE |d(max) - d(min)|
+  /// / p-p, the root stress |d| / the largest root stress of each gear, p_max |d| / the largest
+  /// p_max; the largest over the two torques. Throws SolverError when a solve fails.
+  std::array<double, n_quantities> condensation_error(contact::GearContactModel &model,
+                                                      const solve::GearContactInput &in, const Table &sweep,
+                                                      const post::PostOptions &post);
+
+  /// Adds `error` (condensation_error) to the delivered level's estimate, records it in
+  /// `o.condensation`, and updates `met`.
+  void add_condensation_error(TargetOutcome &o, const std::array<double, n_quantities> &error);
+} // namespace gearfem::choice
