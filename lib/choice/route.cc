@@ -67,6 +67,11 @@ namespace gearfem::choice
     return r;
   }
 
+  bool probe_before_cycle(const TargetOutcome &o, const FixedSettings &fixed)
+  {
+    return o.target[Quantity::pp_ste] > 0 && !fixed.h_contact;
+  }
+
   std::array<double, n_quantities> condensation_error(contact::GearContactModel &model,
                                                       const solve::GearContactInput &in, const Table &sweep,
                                                       const post::PostOptions &post)

@@ -39,6 +39,13 @@ namespace gearfem::choice
   /// an external pair), asks for no VTU (the cycle keeps no fields) and is not resumed.
   RoutePlan plan_route(const solve::GearContactInput &in, bool resume, double scene_ratio = 4.0);
 
+  /// With a p-p STE tolerance that a finer h_contact may still meet (h_contact not set in the
+  /// input): sweep the first torque in full before building a cycle, so that abandon_sweep
+  /// can stop a level whose p-p already fails there, before its build (Siasos 2010 23/69 at
+  /// ten torques: the m/45 level's cycle, about 2 s, was built and then discarded). Costs one
+  /// full torque sweep where the level passes.
+  bool probe_before_cycle(const TargetOutcome &o, const FixedSettings &fixed);
+
   /// The condensation's error on the run: full FE solves on `model` (the delivered model the
   /// cycle was built from) at the lowest and the highest torque of `sweep` (the condensed run's
   /// sweep table), at the rows of its largest and smallest STE, its largest root stress of each

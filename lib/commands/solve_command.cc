@@ -154,13 +154,23 @@ namespace gearfem::commands
       report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs, true);
     }
 
+    /// How Solve/Target's sweep of one level went (sweep_on_cycle).
+    enum class Swept
+    {
+      full_fe,      ///< not on a cycle: the full FE sweep is still to run
+      on_cycle,     ///< on the condensed cycle, into r
+      probe_stopped ///< the first torque swept in full already asks for a finer level: r holds it
+    };
+
     /// Solve/Target's condensed route (choice::plan_route): the cycle of the delivered model,
-    /// built once and re-solved at every torque, into `r`. False, with the reason in
+    /// built once and re-solved at every torque, into `r`. With a p-p tolerance the first
+    /// torque is swept in full first (choice::probe_before_cycle): where its p-p already asks
+    /// for a finer level, no cycle is built for this one. Swept::full_fe, with the reason in
     /// o.route_why, where the full FE sweep runs instead (not planned, or the build or a
     /// re-solve failed: the full FE then decides).
-    bool sweep_on_cycle(choice::TargetOutcome &o, const solve::GearContactInput &in,
-                        const post::PostOptions &post_options, const RunContext &ctx, double cpu_setup,
-                        solve::SolveRunResult &r)
+    Swept sweep_on_cycle(choice::TargetOutcome &o, solve::GearContactInput &in, const choice::FixedSettings &fixed,
+                         const choice::TargetOptions &options, const RunContext &ctx, double cpu_setup,
+                         solve::SolveRunResult &r)
     {
       std::ostream &out            = *ctx.out;
       const choice::RoutePlan plan = choice::plan_route(in, ctx.resume);
@@ -168,8 +178,32 @@ namespace gearfem::commands
       o.route_why                  = plan.why;
       o.condensation.fill(std::numeric_limits<double>::quiet_NaN());
       if (!plan.condensed)
-        return false;
+        return Swept::full_fe;
       out << "model choice: " << plan.why << std::endl;
+      solve::SolveRunOptions opt;
+      opt.output_dir = ctx.output_dir;
+      opt.input_name = ctx.input_file.filename().string();
+      opt.out        = &out;
+      opt.post       = options.post;
+      if (choice::probe_before_cycle(o, fixed))
+        {
+          const std::vector<double> torques = in.solve.torques;
+          in.solve.torques                  = {torques.front()};
+          r                                 = solve::run_solve(*o.model, in, opt);
+          in.solve.torques                  = torques;
+          if (!r.failure.empty())
+            throw SolverError(r.failure + "\n  (the full FE sweep of the first torque, before the condensed cycle)");
+          if (choice::abandon_sweep(o, in, fixed, options, choice::swept_pp(r.results.sweep, torques), 1,
+                                    r.seconds.at("contact")))
+            {
+              o.route_why += "; the first torque, swept in full first, already asks for a finer level";
+              out << "model choice: the first torque's p-p STE, swept in full, already asks for a finer level: no "
+                     "cycle for this one"
+                  << std::endl;
+              r.stopped = true;
+              return Swept::probe_stopped;
+            }
+        }
       std::string failure;
       try
         {
@@ -177,11 +211,6 @@ namespace gearfem::commands
           const condensed::CondensedCycle cycle =
             condensed::build_cycle(*o.model, in, plan.build_torque, plan.lo, plan.hi, &out);
           const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-          solve::SolveRunOptions opt;
-          opt.output_dir = ctx.output_dir;
-          opt.input_name = ctx.input_file.filename().string();
-          opt.out        = &out;
-          opt.post       = post_options;
           r = report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs, false, build);
           failure = r.failure;
         }
@@ -196,11 +225,11 @@ namespace gearfem::commands
       if (failure.empty())
         {
           o.route = "condensed cycle";
-          return true;
+          return Swept::on_cycle;
         }
       o.route_why = "the condensed route failed (" + failure + "); the full FE sweep instead";
       out << "model choice: " << o.route_why << std::endl;
-      return false;
+      return Swept::full_fe;
     }
 
     /// `Solve/Target`: choose the model, prove it at sample positions, refine, then sweep the
@@ -229,8 +258,9 @@ namespace gearfem::commands
           const double cpu_setup = process_cpu_seconds();
           const auto t0          = std::chrono::steady_clock::now();
           solve::SolveRunResult r;
-          const bool on_cycle = sweep_on_cycle(o, in, post_options, ctx, cpu_setup, r);
-          if (!on_cycle)
+          const Swept how     = sweep_on_cycle(o, in, fixed, options, ctx, cpu_setup, r);
+          const bool on_cycle = how == Swept::on_cycle;
+          if (how == Swept::full_fe)
             {
               // The p-p check after each torque: a sweep the torques done already condemn stops.
               const auto check = [&](std::size_t t, const Table &sweep, double seconds) {
@@ -245,8 +275,8 @@ namespace gearfem::commands
           if (on_cycle)
             choice::add_condensation_error(o, choice::condensation_error(*o.model, in, r.results.sweep, post_options));
           const double seconds =
-            on_cycle ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() :
-                       r.seconds.at("contact") + r.seconds.at("post");
+            how != Swept::full_fe ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() :
+                                    r.seconds.at("contact") + r.seconds.at("post");
           if (!choice::refine_after_sweep(o, in, fixed, options, seconds, r.stopped ? swept.pp.size() : 0))
             break;
         }

@@ -1,4 +1,5 @@
 // The route of Solve/Target's sweep (choice/route.h). References:
+// - probe_before_cycle: only for a p-p tolerance with h_contact free;
 // - plan_route: its rule in closed form (1.2 x 3.3 x (1 + parts) torque sweeps, parts of the
 //   torque range at the scene ratio) and the inputs the condensed cycle cannot serve (VTU
 //   fields, --resume, friction: condensed::check_condensable);
@@ -64,6 +65,20 @@ TEST(ChoiceRoute, CondensedFromTheTorquesItsBuildCosts)
     false);
   EXPECT_FALSE(plan.condensed);
   EXPECT_NE(plan.why.find("Friction"), std::string::npos) << plan.why;
+}
+
+TEST(ChoiceRoute, ProbeTheFirstTorqueOnlyWhereAFinerLevelCouldFollow)
+{
+  // The first torque is swept in full before a cycle is built only for a p-p tolerance that a
+  // finer h_contact may still meet.
+  choice::TargetOutcome o;
+  o.target = choice::parse_target("mean STE 1, p-p STE 1, root stress 3");
+  EXPECT_TRUE(choice::probe_before_cycle(o, {}));
+  choice::FixedSettings set_h{};
+  set_h.h_contact = true;
+  EXPECT_FALSE(choice::probe_before_cycle(o, set_h));
+  o.target = choice::parse_target("mean STE 1, root stress 3");
+  EXPECT_FALSE(choice::probe_before_cycle(o, {}));
 }
 
 TEST(ChoiceRoute, CondensationErrorEqualsTheFullSweepsDifferences)
