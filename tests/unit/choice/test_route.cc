@@ -83,15 +83,7 @@ TEST(ChoiceRoute, ProbeTheFirstTorqueOnlyWhereAFinerLevelCouldFollow)
 
 TEST(ChoiceRoute, CondensationErrorEqualsTheFullSweepsDifferences)
 {
-  const auto in = parse(test::parker_pair(R"(
-subsection Mesh
-  set Model = sector
-  set Sector teeth = 3
-  set h_contact = 0.3
-  set h_fillet = 0.5
-  set h_body = 4
-end
-)" + solve_section("100, 200, 400") + "subsection Solve\n  set Positions = cycle\n  set Number of positions = 6\nend\n"));
+  const auto in = parse(test::parker_pair(test::coarse_sector_mesh + solve_section("100, 200, 400") + "subsection Solve\n  set Positions = cycle\n  set Number of positions = 6\nend\n"));
   auto model     = in.model();
   const auto dir = std::filesystem::temp_directory_path() / "gearfem_test_choice_route";
   std::filesystem::remove_all(dir);

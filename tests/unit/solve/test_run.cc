@@ -21,14 +21,7 @@ namespace
 {
   solve::GearContactInput parse(const std::string &text) { return test::parse_solve_input(text); }
 
-  const std::string sector = R"(
-subsection Mesh
-  set Model = sector
-  set Sector teeth = 3
-  set h_contact = 0.3
-  set h_fillet = 0.5
-  set h_body = 4
-end
+  const std::string sector = test::coarse_sector_mesh + R"(
 subsection Solve
   set Positions = cycle
   set Number of positions = 3
