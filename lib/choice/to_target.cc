@@ -655,8 +655,8 @@ namespace gearfem::choice
     s << "Sweep: " << o.route << (o.route_why.empty() ? "" : " (" + o.route_why + ")") << ".";
     if (std::isfinite(o.condensation[0]))
       {
-        s << " The condensation's error measured on the run (full FE at the largest and smallest STE of the "
-             "lowest and highest torque), included in the estimates above:";
+        s << " The condensation's error measured on the run (full FE where the STE, the root stresses and p_max "
+             "peak at the lowest and highest torque), included in the estimates above:";
         for (int q = 0; q < n_quantities; ++q)
           s << " " << AccuracyTarget::names()[q] << " " << pc(o.condensation[q]) << ";";
       }
