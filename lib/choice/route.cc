@@ -2,9 +2,12 @@
 
 #include "base/errors.h"
 #include "condensed/cycle.h"
+#include "condensed/resolve.h"
 #include "solve/error_estimate.h"
 
 #include <algorithm>
+#include <chrono>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -70,6 +73,71 @@ namespace gearfem::choice
   bool probe_before_cycle(const TargetOutcome &o, const FixedSettings &fixed)
   {
     return o.target[Quantity::pp_ste] > 0 && !fixed.h_contact;
+  }
+
+  CycleSweep sweep_on_cycle(TargetOutcome &o, solve::GearContactInput &in, const FixedSettings &fixed,
+                            const TargetOptions &options, const solve::SolveRunOptions &run, bool resume)
+  {
+    CycleSweep c;
+    const RoutePlan plan = plan_route(in, resume);
+    o.route              = "full FE";
+    o.route_why          = plan.why;
+    o.condensation.fill(std::numeric_limits<double>::quiet_NaN());
+    if (!plan.condensed)
+      return c;
+    if (run.out)
+      *run.out << "model choice: " << plan.why << std::endl;
+    if (probe_before_cycle(o, fixed))
+      {
+        const std::vector<double> torques = in.solve.torques;
+        in.solve.torques                  = {torques.front()};
+        c.result                          = solve::run_solve(*o.model, in, run);
+        in.solve.torques                  = torques;
+        if (!c.result.failure.empty())
+          throw SolverError(c.result.failure + "\n  (the full FE sweep of the first torque, before the condensed cycle)");
+        if (abandon_sweep(o, in, fixed, options, swept_pp(c.result.results.sweep, torques), 1,
+                          c.result.seconds.at("contact")))
+          {
+            o.route_why += "; the first torque, swept in full first, already asks for a finer level";
+            if (run.out)
+              *run.out << "model choice: the first torque's p-p STE, swept in full, already asks for a finer "
+                          "level: no cycle for this one"
+                       << std::endl;
+            c.result.stopped = true;
+            c.how            = Swept::probe_stopped;
+            return c;
+          }
+      }
+    std::string failure;
+    try
+      {
+        const auto t0 = std::chrono::steady_clock::now();
+        const condensed::CondensedCycle cycle =
+          condensed::build_cycle(*o.model, in, plan.build_torque, plan.lo, plan.hi, run.out);
+        c.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        c.dofs          = cycle.dofs;
+        c.result        = condensed::run_condensed(cycle, in, run);
+        failure         = c.result.failure;
+      }
+    catch (const SolverError &e)
+      {
+        failure = e.what();
+      }
+    catch (const InputError &e)
+      {
+        failure = e.what();
+      }
+    if (failure.empty())
+      {
+        o.route = "condensed cycle";
+        c.how   = Swept::on_cycle;
+        return c;
+      }
+    o.route_why = "the condensed route failed (" + failure + "); the full FE sweep instead";
+    if (run.out)
+      *run.out << "model choice: " << o.route_why << std::endl;
+    c.result = solve::SolveRunResult();
+    return c;
   }
 
   std::array<double, n_quantities> condensation_error(contact::GearContactModel &model,

@@ -11,6 +11,7 @@
 #include "choice/to_target.h"
 #include "post/position.h"
 #include "solve/input.h"
+#include "solve/run.h"
 
 #include <array>
 #include <string>
@@ -45,6 +46,32 @@ namespace gearfem::choice
   /// ten torques: the m/45 level's cycle, about 2 s, was built and then discarded). Costs one
   /// full torque sweep where the level passes.
   bool probe_before_cycle(const TargetOutcome &o, const FixedSettings &fixed);
+
+  /// How Solve/Target's sweep of one level went (sweep_on_cycle).
+  enum class Swept
+  {
+    full_fe,      ///< not on a cycle: the full FE sweep is still the caller's to run
+    on_cycle,     ///< on the condensed cycle (CycleSweep::result)
+    probe_stopped ///< the first torque swept in full already asks for a finer level (result: it)
+  };
+
+  struct CycleSweep
+  {
+    Swept how = Swept::full_fe;
+    solve::SolveRunResult result;     ///< written to run.output_dir like solve::run_solve
+    double build_seconds = 0;         ///< wall time of the cycle's build
+    unsigned int dofs    = 0;         ///< of the cycle's model
+  };
+
+  /// The condensed route of the delivered level (plan_route): with a p-p tolerance the first
+  /// torque swept in full first (probe_before_cycle; Swept::probe_stopped where abandon_sweep
+  /// stops it, result.stopped set), then the cycle of o.model built once and re-solved at
+  /// every torque. Swept::full_fe, with the reason in o.route_why, where the full FE sweep must
+  /// run instead: not planned, or the build or a re-solve failed (the full FE then decides).
+  /// Sets o.route and o.route_why, clears o.condensation. Throws SolverError when the probe's
+  /// full sweep fails.
+  CycleSweep sweep_on_cycle(TargetOutcome &o, solve::GearContactInput &in, const FixedSettings &fixed,
+                            const TargetOptions &options, const solve::SolveRunOptions &run, bool resume);
 
   /// The condensation's error on the run: full FE solves on `model` (the delivered model the
   /// cycle was built from) at the lowest and the highest torque of `sweep` (the condensed run's

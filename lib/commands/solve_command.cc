@@ -18,13 +18,11 @@
 #include "choice/parameters.h"
 #include "choice/route.h"
 #include "choice/to_target.h"
-#include "condensed/cycle.h"
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -105,14 +103,13 @@ namespace gearfem::commands
     }
 
     /// A run on a condensed cycle as `gearfem solve` reports it: plots, a failure with the
-    /// finished positions kept (`throw_failure`), the summary, the run record's `cost`.
+    /// finished positions kept, the summary, the run record's `cost` (`build_seconds`: of a
+    /// cycle built in this run).
     solve::SolveRunResult report_condensed(solve::SolveRunResult r, const solve::GearContactInput &in,
                                            const RunContext &ctx, double cpu_setup, unsigned int dofs,
-                                           bool throw_failure, double build_seconds = 0)
+                                           double build_seconds = 0)
     {
       std::ostream &out = *ctx.out;
-      if (!r.failure.empty() && !throw_failure)
-        return r;
       if (in.solve.plots && r.results.sweep.n_rows() > 0)
         run_plot_script("plot_solve.py", {ctx.output_dir.string()}, &out);
       if (!r.failure.empty())
@@ -151,85 +148,7 @@ namespace gearfem::commands
       opt.input_name = ctx.input_file.filename().string();
       opt.out        = &out;
       opt.post       = post_options;
-      report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs, true);
-    }
-
-    /// How Solve/Target's sweep of one level went (sweep_on_cycle).
-    enum class Swept
-    {
-      full_fe,      ///< not on a cycle: the full FE sweep is still to run
-      on_cycle,     ///< on the condensed cycle, into r
-      probe_stopped ///< the first torque swept in full already asks for a finer level: r holds it
-    };
-
-    /// Solve/Target's condensed route (choice::plan_route): the cycle of the delivered model,
-    /// built once and re-solved at every torque, into `r`. With a p-p tolerance the first
-    /// torque is swept in full first (choice::probe_before_cycle): where its p-p already asks
-    /// for a finer level, no cycle is built for this one. Swept::full_fe, with the reason in
-    /// o.route_why, where the full FE sweep runs instead (not planned, or the build or a
-    /// re-solve failed: the full FE then decides).
-    Swept sweep_on_cycle(choice::TargetOutcome &o, solve::GearContactInput &in, const choice::FixedSettings &fixed,
-                         const choice::TargetOptions &options, const RunContext &ctx, double cpu_setup,
-                         solve::SolveRunResult &r)
-    {
-      std::ostream &out            = *ctx.out;
-      const choice::RoutePlan plan = choice::plan_route(in, ctx.resume);
-      o.route                      = "full FE";
-      o.route_why                  = plan.why;
-      o.condensation.fill(std::numeric_limits<double>::quiet_NaN());
-      if (!plan.condensed)
-        return Swept::full_fe;
-      out << "model choice: " << plan.why << std::endl;
-      solve::SolveRunOptions opt;
-      opt.output_dir = ctx.output_dir;
-      opt.input_name = ctx.input_file.filename().string();
-      opt.out        = &out;
-      opt.post       = options.post;
-      if (choice::probe_before_cycle(o, fixed))
-        {
-          const std::vector<double> torques = in.solve.torques;
-          in.solve.torques                  = {torques.front()};
-          r                                 = solve::run_solve(*o.model, in, opt);
-          in.solve.torques                  = torques;
-          if (!r.failure.empty())
-            throw SolverError(r.failure + "\n  (the full FE sweep of the first torque, before the condensed cycle)");
-          if (choice::abandon_sweep(o, in, fixed, options, choice::swept_pp(r.results.sweep, torques), 1,
-                                    r.seconds.at("contact")))
-            {
-              o.route_why += "; the first torque, swept in full first, already asks for a finer level";
-              out << "model choice: the first torque's p-p STE, swept in full, already asks for a finer level: no "
-                     "cycle for this one"
-                  << std::endl;
-              r.stopped = true;
-              return Swept::probe_stopped;
-            }
-        }
-      std::string failure;
-      try
-        {
-          const auto t0 = std::chrono::steady_clock::now();
-          const condensed::CondensedCycle cycle =
-            condensed::build_cycle(*o.model, in, plan.build_torque, plan.lo, plan.hi, &out);
-          const double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-          r = report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs, false, build);
-          failure = r.failure;
-        }
-      catch (const SolverError &e)
-        {
-          failure = e.what();
-        }
-      catch (const InputError &e)
-        {
-          failure = e.what();
-        }
-      if (failure.empty())
-        {
-          o.route = "condensed cycle";
-          return Swept::on_cycle;
-        }
-      o.route_why = "the condensed route failed (" + failure + "); the full FE sweep instead";
-      out << "model choice: " << o.route_why << std::endl;
-      return Swept::full_fe;
+      report_condensed(condensed::run_condensed(cycle, in, opt), in, ctx, cpu_setup, cycle.dofs);
     }
 
     /// `Solve/Target`: choose the model, prove it at sample positions, refine, then sweep the
@@ -257,10 +176,18 @@ namespace gearfem::commands
             }
           const double cpu_setup = process_cpu_seconds();
           const auto t0          = std::chrono::steady_clock::now();
-          solve::SolveRunResult r;
-          const Swept how     = sweep_on_cycle(o, in, fixed, options, ctx, cpu_setup, r);
-          const bool on_cycle = how == Swept::on_cycle;
-          if (how == Swept::full_fe)
+          solve::SolveRunOptions opt;
+          opt.output_dir = ctx.output_dir;
+          opt.input_name = ctx.input_file.filename().string();
+          opt.out        = &out;
+          opt.post       = post_options;
+          choice::CycleSweep cs = choice::sweep_on_cycle(o, in, fixed, options, opt, ctx.resume);
+          const choice::Swept how = cs.how;
+          const bool on_cycle     = how == choice::Swept::on_cycle;
+          solve::SolveRunResult r = std::move(cs.result);
+          if (on_cycle)
+            r = report_condensed(std::move(r), in, ctx, cpu_setup, cs.dofs, cs.build_seconds);
+          if (how == choice::Swept::full_fe)
             {
               // The p-p check after each torque: a sweep the torques done already condemn stops.
               const auto check = [&](std::size_t t, const Table &sweep, double seconds) {
@@ -275,7 +202,7 @@ namespace gearfem::commands
           if (on_cycle)
             choice::add_condensation_error(o, choice::condensation_error(*o.model, in, r.results.sweep, post_options));
           const double seconds =
-            how != Swept::full_fe ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() :
+            how != choice::Swept::full_fe ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() :
                                     r.seconds.at("contact") + r.seconds.at("post");
           if (!choice::refine_after_sweep(o, in, fixed, options, seconds, r.stopped ? swept.pp.size() : 0))
             break;
