@@ -140,7 +140,7 @@ namespace gearfem::contact
             if (sr.cand[j].S != S)
               continue;
             unit[sr.cand[j].node] = 1.0;
-            const std::vector<double> p = ss.recover_pressure(unit, ss.body().material().thickness);
+            const std::vector<double> p = ss.recover_pressure(unit, contact_width());
             unit[sr.cand[j].node] = 0.0;
             for (std::size_t n = 0; n < p.size(); ++n)
               if (p[n] != 0 && at_node[n] >= 0)

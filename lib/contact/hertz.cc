@@ -64,13 +64,13 @@ namespace gearfem::contact
 
   std::pair<double, double> hertz_closed_form(const HertzCase &c)
   {
-    const bool strain   = c.model == fem::PlaneModel::plane_strain;
-    const double inv_E  = (strain ? 1 - c.nu1 * c.nu1 : 1.0) / c.E1 + (strain ? 1 - c.nu2 * c.nu2 : 1.0) / c.E2;
-    const double Estar  = 1.0 / inv_E;
-    const double R      = 1.0 / (1.0 / c.R1 + 1.0 / c.R2);
-    const double P      = c.force / c.thickness;
-    const double a      = std::sqrt(4 * P * R / (pi * Estar));
-    return {a, 2 * P / (pi * a)};
+    const bool strain  = c.model == fem::PlaneModel::plane_strain;
+    const double t2    = c.thickness2 > 0 ? c.thickness2 : c.thickness;
+    const double inv_Et = (strain ? 1 - c.nu1 * c.nu1 : 1.0) / (c.E1 * c.thickness) +
+                          (strain ? 1 - c.nu2 * c.nu2 : 1.0) / (c.E2 * t2); // 1/(E* t) [m/N]
+    const double R     = 1.0 / (1.0 / c.R1 + 1.0 / c.R2);
+    const double a     = std::sqrt(4 * c.force * R * inv_Et / pi);
+    return {a, 2 * c.force / (pi * a * std::min(c.thickness, t2))};
   }
 
   std::array<double, 3> fit_ellipse(const std::vector<std::pair<double, double>> &samples)
@@ -117,7 +117,7 @@ namespace gearfem::contact
     const auto m2 = mesh::mesh_domain(disc(c.R2, -pi / 2, half2, h, hb));
     fem::Elasticity e1, e2;
     e1.youngs_modulus = c.E1, e1.poisson_ratio = c.nu1, e1.thickness = c.thickness, e1.model = c.model;
-    e2.youngs_modulus = c.E2, e2.poisson_ratio = c.nu2, e2.thickness = c.thickness, e2.model = c.model;
+    e2.youngs_modulus = c.E2, e2.poisson_ratio = c.nu2, e2.thickness = c.thickness2 > 0 ? c.thickness2 : c.thickness, e2.model = c.model;
     fem::FeOptions fe;
     fe.degree = c.degree;
     fem::ElasticBody b1(m1, e1, fe), b2(m2, e2, fe);

@@ -5,7 +5,10 @@
 // form (Johnson, Contact Mechanics, 1985, sec. 4.3, eqs. 4.43-4.45), P = load per unit
 // thickness: a^2 = 4 P R / (pi E*), p0 = 2 P / (pi a), p(s) = p0 sqrt(1 - s^2/a^2), with
 // 1/R = 1/R1 + 1/R2 and 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 in plane strain, 1/E1 + 1/E2
-// in plane stress. SI units.
+// in plane stress. With unequal thicknesses t1, t2 each body's compliance is that of its own
+// thickness, 1/(E* t) -> (1/E1' t1 + 1/E2' t2), a^2 = 4 F R (1/(E1' t1) + 1/(E2' t2)) / pi, and
+// the line load q0 = 2 F / (pi a) acts over the common width min(t1, t2): p0 = q0 / min(t1, t2).
+// SI units.
 #include "contact/two_body.h"
 #include "fem/elasticity.h"
 
@@ -20,6 +23,7 @@ namespace gearfem::contact
     double E1 = 210e9, E2 = 210e9;   ///< [Pa]
     double nu1 = 0.3, nu2 = 0.3;
     double thickness = 10e-3;        ///< [m]
+    double thickness2 = 0;           ///< body 2's thickness [m]; 0: `thickness`
     double force = 10e3;             ///< total normal force [N]
     fem::PlaneModel model = fem::PlaneModel::plane_stress;
     double h_contact = 0;            ///< element size at the contact [m]; 0: a/8

@@ -355,19 +355,25 @@ namespace gearfem::contact
     options_ = o;
   }
 
+  double TwoBodyContact::contact_width() const
+  {
+    return std::min(s1_->body().material().thickness, s2_->body().material().thickness);
+  }
+
   void TwoBodyContact::fill_solution(ContactSolution &out, const std::vector<Candidate> &cand,
                                      const Linearisation &lin, const Eigen::VectorXd &lambda,
                                      const Eigen::VectorXd &gap, const Scene &scene, double q) const
   {
     const int m = int(cand.size());
-    // Pressure recovered on each slave surface from its own nodal forces.
+    // Pressure recovered on each slave surface from its own nodal forces, over the contact
+    // width both bodies share.
     std::vector<double> node_force[2] = {std::vector<double>(s1_->nodes().size(), 0.0),
                                          std::vector<double>(s2_->nodes().size(), 0.0)};
     for (int k = 0; k < m; ++k)
       node_force[cand[k].S - 1][cand[k].node] = lambda[k];
     std::vector<double> node_p[2];
     for (int b = 0; b < 2; ++b)
-      node_p[b] = surface(b + 1).recover_pressure(node_force[b], surface(b + 1).body().material().thickness);
+      node_p[b] = surface(b + 1).recover_pressure(node_force[b], contact_width());
     out.max_penetration = 0;
     for (int k = 0; k < m; ++k)
       {

@@ -164,6 +164,11 @@ namespace gearfem::contact
                           const ContactSolution *warm = nullptr);
 
     const ContactSurface &surface(int body) const { return body == 1 ? *s1_ : *s2_; }
+    /// The width the contact pressure acts over: the smaller thickness (face width) of the
+    /// two bodies [m]. The wider body's extra width carries no contact (ISO 6336-2 takes the
+    /// same common face width for sigma_H); recovering the pressure over the slave's own
+    /// width would put it 7 % low on a 75 mm pinion against a 70 mm gear.
+    double contact_width() const;
     const ContactOptions &options() const { return options_; }
     /// Number of flexibility columns computed so far per body (cache statistics).
     std::size_t cached_columns(int body) const;
