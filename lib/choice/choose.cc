@@ -16,6 +16,14 @@ namespace gearfem::choice
       return o.str();
     }
 
+    std::string g3(double v)
+    {
+      std::ostringstream o;
+      o.precision(3);
+      o << v;
+      return o.str();
+    }
+
     std::string pc(double v)
     {
       std::ostringstream o;
@@ -31,16 +39,18 @@ namespace gearfem::choice
     return n;
   }
 
-  double predicted_error(Quantity q, double h, double m)
+  double predicted_error(Quantity q, double h, double m, double a)
   {
     switch (q)
       {
         case Quantity::mean_ste:
           return 0.0194 * std::pow(h / (m / 10), 2);
         case Quantity::pp_ste:
-          return h > m / 20 * (1 + 1e-9) ? 1.0 : 0.013 * std::pow(h / (m / 30), 2);
+          return h > m / 20 * (1 + 1e-9) ?
+                   1.0 :
+                   std::max(0.013 * std::pow(h / (m / 30), 2), a > 0 ? pp_per_half_width * std::pow(h / a, 2) : 0.0);
         case Quantity::p_max:
-          return 0.113 * std::pow(h / (m / 30), 2);
+          return 0.081 * std::pow(h / (m / 30), 2);
         default:
           return 0;
       }
@@ -59,6 +69,18 @@ namespace gearfem::choice
   double fillet_size_for_resolution(double resolution, double m)
   {
     return m / 6 * std::pow(resolution / resolution_m6, 1 / fillet_resolution_order);
+  }
+
+  double contact_half_width(const geometry::GearPair &pair, const analytical::PlaneElastic &e1,
+                            const analytical::PlaneElastic &e2, double torque)
+  {
+    const double curvature = pair.equivalent_curvature(0);
+    const double b         = std::min(pair.face_width(1), pair.face_width(2));
+    if (!(torque > 0) || !(curvature > 0) || !(b > 0))
+      return 0;
+    const double w = torque / (pair.base_radius(1) * b);
+    // Both radii at C in one: R1 = R2 = 2 R gives R1 R2 / (R1 + R2) = R.
+    return analytical::hertz_line_contact(w, 2 / curvature, 2 / curvature, e1, e2).half_width;
   }
 
   double snap_finer(double h, double m)
@@ -93,9 +115,11 @@ namespace gearfem::choice
   }
 
   ModelChoice choose_model(const geometry::GearPair &pair, const mesh::GearMeshParameters given[2],
-                           unsigned int degree, const AccuracyTarget &target, const FixedSettings &fixed)
+                           unsigned int degree, const AccuracyTarget &target, const FixedSettings &fixed,
+                           double half_width)
   {
     ModelChoice c;
+    c.half_width = half_width;
     c.mesh[0] = given[0];
     c.mesh[1] = given[1];
     c.degree  = degree;
@@ -106,24 +130,29 @@ namespace gearfem::choice
     // h_contact: the coarsest rung of the ladder whose predicted errors are all within 1.1 times
     // the tolerances (the estimate on the run then decides).
     const bool stress_asked = target.asks(Quantity::root_stress) || target.asks(Quantity::p_max);
-    double h = 0;
     std::string driver;
     const auto rungs = contact_rungs();
-    if (!target.asks(Quantity::mean_ste) && !target.asks(Quantity::pp_ste) && !target.asks(Quantity::p_max))
-      h = m / 15;
-    for (auto n = rungs.begin(); n != rungs.end() && h == 0; ++n)
-      {
-        const double hh = m / *n;
-        bool ok = true;
-        for (int q : {0, 1, 3})
-          if (target.tolerance[q] > 0)
-            ok = ok && predicted_error(static_cast<Quantity>(q), hh, m) <= 1.1 * target.tolerance[q];
-        if (ok)
-          h = hh;
-      }
-    if (h == 0)
-      h = m / rungs.back();
-    if (!target.asks(Quantity::mean_ste) && !target.asks(Quantity::pp_ste) && !target.asks(Quantity::p_max))
+    const bool contact_asked =
+      target.asks(Quantity::mean_ste) || target.asks(Quantity::pp_ste) || target.asks(Quantity::p_max);
+    // The coarsest rung whose predicted errors (with the half-width `a`; 0: the module alone)
+    // are within 1.1 times the tolerances.
+    auto coarsest = [&](double a) {
+      if (!contact_asked)
+        return m / 15;
+      for (const int n : rungs)
+        {
+          bool ok = true;
+          for (int q : {0, 1, 3})
+            if (target.tolerance[q] > 0)
+              ok = ok && predicted_error(static_cast<Quantity>(q), m / n, m, a) <= 1.1 * target.tolerance[q];
+          if (ok)
+            return m / n;
+        }
+      return m / rungs.back();
+    };
+    double h             = coarsest(half_width);
+    c.ladder_h_contact   = coarsest(0);
+    if (!contact_asked)
       driver = "no STE or pressure tolerance: m/15 keeps the mean STE within about 1 %";
     else
       {
@@ -131,14 +160,21 @@ namespace gearfem::choice
                  " of the ladder whose predicted errors are within 1.1 times the tolerances:";
         for (int q : {0, 1, 3})
           if (target.tolerance[q] > 0)
-            driver += std::string(" ") + AccuracyTarget::names()[q] + " " + pc(predicted_error(static_cast<Quantity>(q), h, m));
+            driver += std::string(" ") + AccuracyTarget::names()[q] + " " +
+                      pc(predicted_error(static_cast<Quantity>(q), h, m, half_width));
         driver += " (order 2 from the worst measured: mean STE 1.94 % at m/10, p-p 1.3 % at m/30 (the run's own estimate with "
-                  "the swept ripple) and not coarser than m/20, where the tip-corner contact is unresolved, p_max 11.3 % at m/30)";
+                  "the swept ripple) and not coarser than m/20, where the tip-corner contact is unresolved, p_max 8.1 % at m/30)";
+        if (h < c.ladder_h_contact * (1 - 1e-9))
+          driver += "; finer than the module alone asks (m/" + std::to_string(int(std::lround(m / c.ladder_h_contact))) +
+                    ") for the light load: the p-p estimate is also taken as 2 % (h / a)^2, with the Hertz half-width a = " +
+                    mm(half_width) + " at the lowest torque (h / a = " + g3(h / half_width) +
+                    "; 2 a / h elements across the contact patch), and the companion is the module rung's";
       }
     const bool fillet_matters = stress_asked;
     if (fillet_matters && c.flank_height > 0 && h > c.flank_height)
       {
         h = c.flank_height;
+        c.ladder_h_contact = std::min(c.ladder_h_contact, h);
         driver = "the flank height " + mm(c.flank_height) +
                  " between the start of active profile and the form circle: a coarser contact element lets the "
                  "contact of the tooth entering mesh leak into its fillet (Siasos 2010 23/69: root stress 25-36 % "

@@ -2,6 +2,7 @@
 // The cheapest FE model expected to meet an accuracy target, read off the measured model
 // ladder (validation/speed_vs_error, docs/model-choice.md) and the pair's own size. The
 // choice is the first guess of choice/to_target.h, which then proves it on the run. No deal.II.
+#include "analytical/elastic.h"
 #include "choice/target.h"
 #include "geometry/pair.h"
 #include "mesh/gear_mesh.h"
@@ -25,6 +26,12 @@ namespace gearfem::choice
     /// The largest h_contact that keeps the contact field of the tooth entering mesh out of
     /// its fillet: the smaller flank height r_SAP - r_Ff of the two gears [m] (0: none).
     double flank_height = 0;
+    /// The Hertz half-width at the pitch point in single contact under the lowest torque [m]
+    /// (0: not known); it sizes h_contact for the p-p STE (predicted_error).
+    double half_width = 0;
+    /// The h_contact the module alone asks for (the rung without the half-width rule) [m]: the
+    /// companion is sized from it, as for a level the proof refined (to_target.h).
+    double ladder_h_contact = 0;
     std::vector<std::string> reasons; ///< why each setting, in words, with the measured figures
   };
 
@@ -33,7 +40,20 @@ namespace gearfem::choice
   const std::vector<int> &contact_rungs();
   /// The error the measured ladder predicts at h_contact `h` [m] for module `m` [m] (relative;
   /// order 2 from the worst measured case; p-p 1 (100 %) coarser than m/20; 0 for the root stress).
-  double predicted_error(Quantity q, double h, double m);
+  /// With the Hertz half-width `a` [m] (contact_half_width; 0: not known), the p-p STE is also
+  /// at least pp_per_half_width (h / a)^2: what the run's own p-p estimate gave on the five pairs
+  /// of validation/model_choice at their swept levels, 0.87-1.96 % (h / a)^2 for h / a = 0.57 to
+  /// 0.90 (the node-to-segment contact resolves a patch of 2a / h elements: the lightly loaded
+  /// Siasos 2010 23/69 pair at m/45 has 2.2 of them, 1.44 % p-p estimate, and needs m/60).
+  double predicted_error(Quantity q, double h, double m, double a = 0);
+  /// The envelope of the p-p estimate per (h / a)^2 (predicted_error).
+  inline constexpr double pp_per_half_width = 0.020;
+  /// The Hertz half-width [m] of the pair's contact at the pitch point C (equivalent_curvature
+  /// there) with the whole torque `torque` [N m] on one tooth pair, over the narrower face
+  /// width: a = sqrt(4 w R / (pi E*)), w = torque / (r_b1 b) (analytical::hertz_line_contact).
+  /// 0 for a torque <= 0.
+  double contact_half_width(const geometry::GearPair &pair, const analytical::PlaneElastic &e1,
+                            const analytical::PlaneElastic &e2, double torque);
   /// The resolution of a root stress read with fillet size `h_fillet` [m], module `m` [m]
   /// (relative): the envelope of the fitted fillet peak's error against h_fillet m/60, over
   /// the level-to-level scatter of the meshes. Two levels cannot resolve an error below it:
@@ -77,11 +97,13 @@ namespace gearfem::choice
   ///  - h_contact: the coarsest rung (contact_rungs) whose predicted errors (predicted_error:
   ///    mean STE 1.94 % at about m/10 (an earlier study's meshes; 1.26 % now, the larger
   ///    kept), p-p 1.3 % at m/30 and never coarser than m/20, where the tip-corner contact is
-  ///    unresolved (p-p 10.6 % at m/12 to m/18), p_max 11.3 % at m/30; all order 2) are within
+  ///    unresolved (p-p 10.6 % at m/12 to m/18), p_max 8.1 % at m/30 (FZG type C); all order 2) are within
   ///    1.1 times the tolerances. The p-p figure is what the run's own
   ///    estimate, which includes twice the swept mesh ripple, gives at m/30 (1.0-2.5 % on the
   ///    five pairs of validation/model_choice; 0.6-1.0 % at m/45), not the true error (at most
-  ///    1.1 %): the guess aims at the level the proof accepts, so that one sweep suffices;
+  ///    1.1 %): the guess aims at the level the proof accepts, so that one sweep suffices; with
+  ///    `half_width` (contact_half_width at the lowest torque; 0: not known), also at least
+  ///    pp_per_half_width (h / a)^2, so that a lightly loaded pair starts fine enough;
   ///  - from the root stress: h_fillet m/12, finer where its fillet_resolution exceeds the
   ///    tolerance / 1.1 (0.77 % at m/12); and h_contact at most
   ///    the flank height, which catches the Siasos 2010 23/69 pair (root stress 25-36 % off at
@@ -93,5 +115,6 @@ namespace gearfem::choice
   ///  - the body and the unloaded teeth of a full gear sized for the target, not for every
   ///    question (body_size, unloaded_tooth_size).
   ModelChoice choose_model(const geometry::GearPair &pair, const mesh::GearMeshParameters given[2],
-                           unsigned int degree, const AccuracyTarget &target, const FixedSettings &fixed);
+                           unsigned int degree, const AccuracyTarget &target, const FixedSettings &fixed,
+                           double half_width = 0);
 } // namespace gearfem::choice

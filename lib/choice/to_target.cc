@@ -362,6 +362,25 @@ namespace gearfem::choice
     }
   } // namespace
 
+  double lowest_torque_half_width(const solve::GearContactInput &in)
+  {
+    if (in.solve.torques.empty())
+      return 0;
+    analytical::PlaneElastic e[2];
+    for (int i = 0; i < 2; ++i)
+      {
+        const auto &m = in.material[i];
+        e[i]          = analytical::plane_elastic({m.youngs_modulus, m.poisson_ratio},
+                                         m.model == fem::PlaneModel::plane_stress ?
+                                                    analytical::PlaneCondition::plane_stress :
+                                                    analytical::PlaneCondition::plane_strain);
+      }
+    double T = in.solve.torques.front();
+    for (const double t : in.solve.torques)
+      T = std::min(T, std::abs(t));
+    return contact_half_width(*in.pair, e[0], e[1], std::abs(T));
+  }
+
   TargetOutcome run_to_target(solve::GearContactInput &in, const AccuracyTarget &target, const FixedSettings &fixed,
                               const TargetOptions &options)
   {
@@ -372,7 +391,7 @@ namespace gearfem::choice
     TargetOutcome o;
     o.target    = target;
     o.order     = options.order;
-    o.choice    = choose_model(*in.pair, in.mesh, in.fe.degree, target, fixed);
+    o.choice    = choose_model(*in.pair, in.mesh, in.fe.degree, target, fixed, lowest_torque_half_width(in));
     o.positions = target_sample_positions(*in.pair);
     o.mean_weights = zone_weights(*in.pair);
     o.torques   = in.solve.torques;
@@ -393,8 +412,15 @@ namespace gearfem::choice
 
     // The companion: coarser by 2 where the asked quantities live, but inside the range where
     // the error is asymptotic (p-p STE: m/20; root stress and p_max: the flank height); where
-    // that leaves less than a factor 1.4, finer by 2 instead.
-    double rc = asks_contact ? 2 : 1, rf = asks_fillet ? 2 : 1;
+    // that leaves less than a factor 1.4, finer by 2 instead. Where the light load made the
+    // first guess finer than the module's rung (ModelChoice::ladder_h_contact), the companion
+    // is that rung's, as for a level the proof refined (step 4): Richardson amplifies the
+    // level-to-level scatter by 1/(rho^2 - 1), 0.16 at the 2.67 of m/60 against m/22.5 and
+    // 0.33 at 2 (the Siasos 2010 23/69 pair at m/60: p-p estimate 0.83 % against m/22.5, 1.01 %
+    // against m/30).
+    const double h_cand  = cand.mesh[0].h_contact;
+    const double h_rung  = fixed.h_contact ? h_cand : std::max(h_cand, o.choice.ladder_h_contact);
+    double rc = asks_contact ? 2 * h_rung / h_cand : 1, rf = asks_fillet ? 2 : 1;
     if (asks_contact || asks_fillet)
       {
         double h_max = target.asks(Quantity::pp_ste) ? m / 20 : m / 8;

@@ -2,7 +2,8 @@
 // - parse_target: the grammar and the presets of `Solve/Target` (docs/model-choice.md);
 // - choose_model: the rules stated in choice/choose.h (measured ladder, validation/speed_vs_error),
 //   and the flank height r_SAP - r_Ff of the Siasos 2010 23/69 pair computed here from the
-//   line of action and the form circle (0.190 mm in validation/RESULTS.md);
+//   line of action and the form circle (0.190 mm in validation/RESULTS.md); the Hertz
+//   half-width of the light-load rule in closed form (Johnson 1985);
 // - fillet_resolution: the envelope of measured root-stress errors against h_fillet m/60
 //   (four pairs, the table in the test);
 // - estimate_relative: Richardson is exact for Q(h) = Q0 + C h^2 (closed form), with the
@@ -23,6 +24,7 @@
 #include "choice/to_target.h"
 #include "common/fixtures.h"
 #include "base/errors.h"
+#include "base/units.h"
 #include "solve/input.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -167,6 +169,40 @@ TEST(ChoiceRules, FollowTheLadderAndCatchTheFlankHeight)
   // Without a stress target the mean-STE rule alone (m/10 sqrt(2/1.94)) is coarser.
   c = choice::choose_model(pair, s.mesh, 2, choice::parse_target("mean STE 2"), {});
   EXPECT_GT(c.mesh[0].h_contact, flank);
+}
+
+TEST(ChoiceRules, ALightLoadRefinesTheFirstGuessAndKeepsTheModulesCompanion)
+{
+  // Siasos 2010 23/69 m 4 (75 / 70 mm) at 200 N m, the lightest of its torques: the Hertz
+  // half-width at C in closed form (Johnson 1985, eq. 4.45, plane stress: 1/E* = 2/E), the
+  // line load on the common 70 mm, w = T / (r_b1 b).
+  dealii::ParameterHandler prm;
+  const auto in = parse(std::string(seed001) + "subsection Solve\n  set Torques = 500, 200, 350\nend\n", prm);
+  const double m = 4e-3, alpha = 20 * units::deg, rb1 = 46e-3 * std::cos(alpha), rb2 = 138e-3 * std::cos(alpha);
+  const double R = rb1 * std::tan(alpha) * rb2 * std::tan(alpha) / ((rb1 + rb2) * std::tan(alpha));
+  const double E = in.material[0].youngs_modulus, w = 200 / (rb1 * 70e-3);
+  const double a = std::sqrt(4 * w * R / (units::pi * E / 2));
+  EXPECT_NEAR(choice::lowest_torque_half_width(in), a, 1e-9 * a);
+  EXPECT_NEAR(a, 0.0984e-3, 0.0005e-3); // docs/model-choice.md
+  // p-p 1 %: the module's rung is m/45 (0.58 % predicted); with the half-width the p-p is at
+  // least 2 % (h/a)^2: 1.63 % at m/45 (h/a 0.90), 0.92 % at m/60 -> m/60, and the companion is
+  // sized from m/45 (ladder_h_contact).
+  const auto target = choice::parse_target("p-p STE 1, root stress 3");
+  auto c = choice::choose_model(*in.pair, in.mesh, 2, target, {}, a);
+  EXPECT_NEAR(c.mesh[0].h_contact, m / 60, 1e-12);
+  EXPECT_NEAR(c.ladder_h_contact, m / 45, 1e-12);
+  EXPECT_NEAR(choice::predicted_error(Quantity::pp_ste, m / 45, m, a), 0.02 * std::pow(m / 45 / a, 2), 1e-12);
+  EXPECT_NEAR(choice::predicted_error(Quantity::pp_ste, m / 45, m, 0), 0.013 * std::pow(30.0 / 45, 2), 1e-12);
+  // A twice heavier patch (four times the load) or no half-width: the module's rung, one guess.
+  for (const double aa : {2 * a, 0.0})
+    {
+      c = choice::choose_model(*in.pair, in.mesh, 2, target, {}, aa);
+      EXPECT_NEAR(c.mesh[0].h_contact, m / 45, 1e-12);
+      EXPECT_NEAR(c.ladder_h_contact, m / 45, 1e-12);
+    }
+  // The other quantities do not take the half-width.
+  EXPECT_NEAR(choice::choose_model(*in.pair, in.mesh, 2, choice::parse_target("mean STE 1"), {}, a).mesh[0].h_contact,
+              m / 15, 1e-12);
 }
 
 TEST(ChoiceEstimate, RichardsonIsExactForOrderTwo)
