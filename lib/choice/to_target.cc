@@ -375,10 +375,11 @@ namespace gearfem::choice
                                                     analytical::PlaneCondition::plane_stress :
                                                     analytical::PlaneCondition::plane_strain);
       }
-    double T = in.solve.torques.front();
+    double T = 0; // the smallest non-zero |torque|: a zero torque has no contact to resolve
     for (const double t : in.solve.torques)
-      T = std::min(T, std::abs(t));
-    return contact_half_width(*in.pair, e[0], e[1], std::abs(T));
+      if (t != 0 && (T == 0 || std::abs(t) < T))
+        T = std::abs(t);
+    return contact_half_width(*in.pair, e[0], e[1], T);
   }
 
   TargetOutcome run_to_target(solve::GearContactInput &in, const AccuracyTarget &target, const FixedSettings &fixed,

@@ -126,7 +126,8 @@ namespace gearfem::choice
   extern const std::vector<std::size_t> zone_samples;
 
   /// The Hertz half-width (choice::contact_half_width) of `in`'s pair and materials at the
-  /// smallest |torque| of its Solve/Torques [m] (0: none), the first guess's contact load.
+  /// smallest non-zero |torque| of its Solve/Torques [m] (0: none), the first guess's contact
+  /// load.
   double lowest_torque_half_width(const solve::GearContactInput &in);
 
   /// Choose, prove and refine for `in` (its mesh and FE degree are replaced by the delivered
