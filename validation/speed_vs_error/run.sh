@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Speed against error (README.md): every rung of the model ladder on the
 # Parker pair, FZG type C and Siasos 2010's 23/69 at three torques each, against the converged
-# FE (full gears, Q2, Lagrange, h_contact 0.05 mm). About 60-90 min on the 2-core machine
+# FE (full gears, Q2, Lagrange, h_contact 0.05 mm). About 10 min on the 2-core machine
 # (the three references are most of it).
 #   run.sh            run every rung (results/<pair>/<rung>), then analyse and check
 #   run.sh --reuse    keep the rungs that finished in an earlier run (results/.../done)
