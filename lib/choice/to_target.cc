@@ -517,7 +517,7 @@ namespace gearfem::choice
     return r;
   }
 
-  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept)
+  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept, std::array<double, 3> *parts)
   {
     const Level &l = o.levels[o.delivered];
     const std::size_t n = o.positions.size();
@@ -534,6 +534,8 @@ namespace gearfem::choice
             richardson = estimate_relative(a, b, n, l.rho_contact, 1, o.order, &pp, zone_samples)[1];
           }
         const double rip = t < swept.ripple.size() ? 2 * swept.ripple[t] / swept.pp[t] : 0;
+        if (richardson + rip >= worst && parts)
+          *parts = {richardson, rip, t < o.torques.size() ? o.torques[t] : std::nan("")};
         worst = std::max(worst, richardson + rip);
       }
     return worst;
@@ -543,8 +545,10 @@ namespace gearfem::choice
   {
     if (o.delivered == 0)
       return;
-    Level &l      = o.levels[o.delivered];
-    l.estimate[1] = swept_pp_estimate(o, swept);
+    Level &l = o.levels[o.delivered];
+    std::array<double, 3> parts{nan, nan, nan};
+    l.estimate[1]   = swept_pp_estimate(o, swept, &parts);
+    l.pp_richardson = parts[0], l.pp_ripple = parts[1], l.pp_torque = parts[2];
     update_met(o);
   }
 
@@ -679,6 +683,10 @@ namespace gearfem::choice
         s << " " << AccuracyTarget::names()[q] << " " << pc(d.estimate[q]) << " / " << pc(o.target.tolerance[q])
           << (d.estimate[q] <= o.target.tolerance[q] ? "" : " (above)") << ";";
     s << " choice " << std::fixed << std::setprecision(1) << o.seconds << " s.\n";
+    if (o.target.tolerance[1] > 0 && std::isfinite(d.pp_richardson))
+      s << "The p-p STE estimate is a bound: at " << d.pp_torque << " N m, where it is largest, the Richardson part "
+        << "of the zone middles " << pc(d.pp_richardson) << " plus twice the swept position-to-position ripple "
+        << pc(d.pp_ripple) << " of the swept p-p (docs/model-choice.md, step 3).\n";
     s << "Sweep: " << o.route << (o.route_why.empty() ? "" : " (" + o.route_why + ")") << ".";
     if (std::isfinite(o.condensation[0]))
       {
@@ -725,6 +733,8 @@ namespace gearfem::choice
           << ", \"setup_seconds\": " << json(l.seconds_setup)
           << ", \"samples_seconds\": " << json(l.seconds_samples) << ", \"estimate\": " << quantities(l.estimate)
           << ", \"root_stress_resolution\": " << json(l.fillet_resolution)
+          << ", \"pp_ste_parts\": {\"richardson\": " << json(l.pp_richardson)
+          << ", \"twice_ripple\": " << json(l.pp_ripple) << ", \"torque\": " << json(l.pp_torque) << "}"
           << "}";
       }
     auto escaped = [](const std::string &r) {

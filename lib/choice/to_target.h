@@ -20,6 +20,7 @@
 #include "solve/input.h"
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <ostream>
@@ -62,6 +63,10 @@ namespace gearfem::choice
     /// A swept level the choice refined after its sweep: the torques that sweep covered (fewer
     /// than Solve/Torques where abandon_sweep stopped it); 0 for the other levels.
     std::size_t swept_torques = 0;
+    /// The parts of a swept p-p estimate (swept_pp_estimate) at the torque where it is
+    /// largest, relative to that torque's swept p-p: the Richardson part of the zone samples
+    /// and twice the swept ripple; the torque [N m]. NaN where the level was not swept.
+    double pp_richardson = std::nan(""), pp_ripple = std::nan(""), pp_torque = std::nan("");
   };
 
   struct TargetOutcome
@@ -157,10 +162,11 @@ namespace gearfem::choice
   /// The p-p estimate of the delivered level against the sweep: per torque swept, the
   /// Richardson part of its zone samples relative to the swept p-p, plus twice the swept
   /// ripple relative to it; the largest over the torques.
-  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept);
+  /// `parts` (may be null): {Richardson part, twice the ripple, torque} where it is largest.
+  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept, std::array<double, 3> *parts = nullptr);
 
-  /// With the sweep done: the delivered level's p-p estimate becomes swept_pp_estimate.
-  /// Updates `met`.
+  /// With the sweep done: the delivered level's p-p estimate becomes swept_pp_estimate, and
+  /// its parts are kept (Level::pp_richardson, pp_ripple, pp_torque). Updates `met`.
   void rescale_pp(TargetOutcome &o, const SweptPp &swept);
   /// `met`: every asked quantity's estimate of the delivered level within its tolerance.
   void update_met(TargetOutcome &o);

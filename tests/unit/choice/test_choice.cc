@@ -533,6 +533,10 @@ TEST(ChoiceSweep, AbandonsASweepOnlyWhereTheRefinementFollows)
   choice::rescale_pp(o, large);
   EXPECT_NEAR(o.delivered_level().estimate[1], 0.015, 1e-9);
   EXPECT_FALSE(o.met);
+  // ... and keeps its parts: 0.02 / 4 Richardson, 2 x 0.02 / 4 ripple, at the first torque.
+  EXPECT_NEAR(o.delivered_level().pp_richardson, 0.005, 1e-9);
+  EXPECT_NEAR(o.delivered_level().pp_ripple, 0.01, 1e-9);
+  EXPECT_DOUBLE_EQ(o.delivered_level().pp_torque, 100);
   choice::rescale_pp(o, small);
   EXPECT_TRUE(o.met);
 }
