@@ -76,11 +76,12 @@ namespace gearfem::choice
   {
     const double curvature = pair.equivalent_curvature(0);
     const double b         = std::min(pair.face_width(1), pair.face_width(2));
-    if (!(torque > 0) || !(curvature > 0) || !(b > 0))
+    const double rb        = pair.base_radius(1);
+    if (!(torque > 0) || !(curvature > 0) || !(b > 0) || !(rb > 0) || !std::isfinite(curvature))
       return 0;
-    const double w = torque / (pair.base_radius(1) * b);
     // Both radii at C in one: R1 = R2 = 2 R gives R1 R2 / (R1 + R2) = R.
-    return analytical::hertz_line_contact(w, 2 / curvature, 2 / curvature, e1, e2).half_width;
+    const double a = analytical::hertz_line_contact(torque / (rb * b), 2 / curvature, 2 / curvature, e1, e2).half_width;
+    return std::isfinite(a) && a > 0 ? a : 0; // 0: not known, the module's rung alone
   }
 
   double snap_finer(double h, double m)

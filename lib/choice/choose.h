@@ -51,7 +51,7 @@ namespace gearfem::choice
   /// The Hertz half-width [m] of the pair's contact at the pitch point C (equivalent_curvature
   /// there) with the whole torque `torque` [N m] on one tooth pair, over the narrower face
   /// width: a = sqrt(4 w R / (pi E*)), w = torque / (r_b1 b) (analytical::hertz_line_contact).
-  /// 0 for a torque <= 0.
+  /// 0 (not known) for a torque <= 0 or a pair without a base circle or curvature at C.
   double contact_half_width(const geometry::GearPair &pair, const analytical::PlaneElastic &e1,
                             const analytical::PlaneElastic &e2, double torque);
   /// The resolution of a root stress read with fillet size `h_fillet` [m], module `m` [m]
