@@ -120,7 +120,6 @@ namespace gearfem::choice
                            double half_width)
   {
     ModelChoice c;
-    c.half_width = half_width;
     c.mesh[0] = given[0];
     c.mesh[1] = given[1];
     c.degree  = degree;
@@ -167,7 +166,8 @@ namespace gearfem::choice
                   "the swept ripple) and not coarser than m/20, where the tip-corner contact is unresolved, p_max 8.1 % at m/30)";
         if (h < c.ladder_h_contact * (1 - 1e-9))
           driver += "; finer than the module alone asks (m/" + std::to_string(int(std::lround(m / c.ladder_h_contact))) +
-                    ") for the light load: the p-p estimate is also taken as 2 % (h / a)^2, with the Hertz half-width a = " +
+                    ") for the light load: the p-p estimate is also taken as " + pc(pp_per_half_width) +
+                    " (h / a)^2, with the Hertz half-width a = " +
                     mm(half_width) + " at the lowest torque (h / a = " + g3(h / half_width) +
                     "; 2 a / h elements across the contact patch), and the companion is the module rung's";
       }

@@ -26,9 +26,6 @@ namespace gearfem::choice
     /// The largest h_contact that keeps the contact field of the tooth entering mesh out of
     /// its fillet: the smaller flank height r_SAP - r_Ff of the two gears [m] (0: none).
     double flank_height = 0;
-    /// The Hertz half-width at the pitch point in single contact under the lowest torque [m]
-    /// (0: not known); it sizes h_contact for the p-p STE (predicted_error).
-    double half_width = 0;
     /// The h_contact the module alone asks for (the rung without the half-width rule) [m]: the
     /// companion is sized from it, as for a level the proof refined (to_target.h).
     double ladder_h_contact = 0;
