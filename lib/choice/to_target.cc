@@ -494,9 +494,13 @@ namespace gearfem::choice
       }
     if (r.size() < 4)
       return 0;
-    auto q = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
-    std::nth_element(r.begin(), q, r.end());
-    return *q;
+    // The median: the middle value, or the mean of the two middle ones.
+    const std::size_t k = r.size() / 2;
+    std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(k), r.end());
+    const double upper = r[k];
+    if (r.size() % 2)
+      return upper;
+    return 0.5 * (upper + *std::max_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(k)));
   }
 
   SweptPp swept_pp(const Table &sweep, const std::vector<double> &torques)
@@ -517,12 +521,12 @@ namespace gearfem::choice
     return r;
   }
 
-  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept, std::array<double, 3> *parts)
+  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept, PpParts *parts)
   {
     const Level &l = o.levels[o.delivered];
     const std::size_t n = o.positions.size();
     const bool estimated = std::abs(l.rho_contact - 1) > 0.2;
-    double worst = 0;
+    double worst = 0, resolution = 0;
     for (std::size_t t = 0; t < swept.pp.size() && swept.pp[t] > 0; ++t)
       {
         double richardson = std::isfinite(l.estimate[1]) ? l.estimate[1] : 0; // carried: as it was
@@ -534,10 +538,20 @@ namespace gearfem::choice
             richardson = estimate_relative(a, b, n, l.rho_contact, 1, o.order, &pp, zone_samples)[1];
           }
         const double rip = t < swept.ripple.size() ? 2 * swept.ripple[t] / swept.pp[t] : 0;
-        if (richardson + rip >= worst && parts)
-          *parts = {richardson, rip, t < o.torques.size() ? o.torques[t] : std::nan("")};
-        worst = std::max(worst, richardson + rip);
+        // Independent parts: the smooth discretisation error that the zone middles see, and
+        // the scatter that the swept extremes pick up.
+        const double e = std::hypot(richardson, rip);
+        if (e >= worst && parts)
+          {
+            parts->richardson   = richardson;
+            parts->twice_ripple = rip;
+            parts->torque       = t < o.torques.size() ? o.torques[t] : std::nan("");
+          }
+        worst      = std::max(worst, e);
+        resolution = std::max(resolution, rip);
       }
+    if (parts)
+      parts->resolution = resolution;
     return worst;
   }
 
@@ -546,9 +560,10 @@ namespace gearfem::choice
     if (o.delivered == 0)
       return;
     Level &l = o.levels[o.delivered];
-    std::array<double, 3> parts{nan, nan, nan};
+    PpParts parts;
     l.estimate[1]   = swept_pp_estimate(o, swept, &parts);
-    l.pp_richardson = parts[0], l.pp_ripple = parts[1], l.pp_torque = parts[2];
+    l.pp_richardson = parts.richardson, l.pp_ripple = parts.twice_ripple, l.pp_torque = parts.torque;
+    l.pp_resolution = parts.resolution;
     update_met(o);
   }
 
@@ -675,8 +690,8 @@ namespace gearfem::choice
       }
     s << "\nAchieved (estimated relative error of the delivered run: Richardson order " << o.order
       << " against the companion at (A+B)/2 and (B+D)/2 for the STE, also at B and D for the stresses, "
-         "every torque; the p-p STE with twice the swept mesh ripple; the root stress at least the fillet mesh's "
-         "resolution, "
+         "every torque; the p-p STE with twice the swept mesh ripple, its resolution; the root stress at least the "
+         "fillet mesh's resolution, "
       << pc(d.fillet_resolution) << ") against the target:";
     for (int q = 0; q < n_quantities; ++q)
       if (o.target.tolerance[q] > 0)
@@ -684,9 +699,11 @@ namespace gearfem::choice
           << (d.estimate[q] <= o.target.tolerance[q] ? "" : " (above)") << ";";
     s << " choice " << std::fixed << std::setprecision(1) << o.seconds << " s.\n";
     if (o.target.tolerance[1] > 0 && std::isfinite(d.pp_richardson))
-      s << "The p-p STE estimate is a bound: at " << d.pp_torque << " N m, where it is largest, the Richardson part "
-        << "of the zone middles " << pc(d.pp_richardson) << " plus twice the swept position-to-position ripple "
-        << pc(d.pp_ripple) << " of the swept p-p (docs/model-choice.md, step 3).\n";
+      s << "The p-p STE estimate at " << d.pp_torque << " N m, where it is largest, combines the Richardson part "
+        << "of the zone middles " << pc(d.pp_richardson) << " and twice the swept position-to-position ripple "
+        << pc(d.pp_ripple) << " of the swept p-p (root sum of squares); the p-p's resolution, twice the ripple at "
+        << "its largest over the torques, is " << pc(d.pp_resolution)
+        << ": below it the p-p error is scatter, not ordered by h (docs/model-choice.md, step 3).\n";
     s << "Sweep: " << o.route << (o.route_why.empty() ? "" : " (" + o.route_why + ")") << ".";
     if (std::isfinite(o.condensation[0]))
       {
@@ -735,6 +752,7 @@ namespace gearfem::choice
           << ", \"root_stress_resolution\": " << json(l.fillet_resolution)
           << ", \"pp_ste_parts\": {\"richardson\": " << json(l.pp_richardson)
           << ", \"twice_ripple\": " << json(l.pp_ripple) << ", \"torque\": " << json(l.pp_torque) << "}"
+          << ", \"pp_ste_resolution\": " << json(l.pp_resolution)
           << "}";
       }
     auto escaped = [](const std::string &r) {

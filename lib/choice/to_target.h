@@ -67,6 +67,9 @@ namespace gearfem::choice
     /// largest, relative to that torque's swept p-p: the Richardson part of the zone samples
     /// and twice the swept ripple; the torque [N m]. NaN where the level was not swept.
     double pp_richardson = std::nan(""), pp_ripple = std::nan(""), pp_torque = std::nan("");
+    /// The resolution of the swept p-p (relative): twice the swept ripple, the largest over
+    /// the torques; the p-p estimate is never below it. NaN where the level was not swept.
+    double pp_resolution = std::nan("");
   };
 
   struct TargetOutcome
@@ -142,7 +145,8 @@ namespace gearfem::choice
 
   /// The mesh ripple of a swept STE curve (`ste` over `roll`, one torque, in order): at each
   /// interior position, |STE - the least-squares quadratic through the two neighbours on each
-  /// side|; the median of these. A smooth curve gives its curvature term only (the converged
+  /// side|; the median of these (the mean of the two middle ones for an even count). A smooth
+  /// curve gives its curvature term only (the converged
   /// references of validation/model_choice: 0.04-0.11 % of the p-p; the 75th percentile,
   /// which the transitions reach, 0.12-0.38 %); the node-to-segment ripple of a contact mesh
   /// (the STE of the Parker pair at m/30 and 100 N m moves by +-0.01 um from position to
@@ -159,14 +163,25 @@ namespace gearfem::choice
   /// "torque" [N m], "roll angle" [deg], "STE" [um]), up to the first torque with none.
   SweptPp swept_pp(const Table &sweep, const std::vector<double> &torques);
 
+  /// The parts of a swept p-p estimate, relative to the swept p-p of their torque.
+  struct PpParts
+  {
+    double richardson   = std::nan(""); ///< the zone middles' Richardson part, where largest
+    double twice_ripple = std::nan(""); ///< twice the swept ripple, where the estimate is largest
+    double torque       = std::nan(""); ///< that torque [N m]
+    double resolution   = std::nan(""); ///< twice the swept ripple, the largest over the torques
+  };
   /// The p-p estimate of the delivered level against the sweep: per torque swept, the
-  /// Richardson part of its zone samples relative to the swept p-p, plus twice the swept
-  /// ripple relative to it; the largest over the torques.
-  /// `parts` (may be null): {Richardson part, twice the ripple, torque} where it is largest.
-  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept, std::array<double, 3> *parts = nullptr);
+  /// Richardson part of its zone samples relative to the swept p-p and twice the swept ripple
+  /// relative to it, combined as independent parts (root sum of squares); the largest over
+  /// the torques. The ripple part is the p-p's resolution: a p-p over the positions picks the
+  /// position-to-position scatter up at both ends, and below it the p-p error of a mesh is
+  /// not ordered by h (docs/model-choice.md, step 3). `parts` (may be null): filled.
+  double swept_pp_estimate(const TargetOutcome &o, const SweptPp &swept, PpParts *parts = nullptr);
 
   /// With the sweep done: the delivered level's p-p estimate becomes swept_pp_estimate, and
-  /// its parts are kept (Level::pp_richardson, pp_ripple, pp_torque). Updates `met`.
+  /// its parts are kept (Level::pp_richardson, pp_ripple, pp_torque, pp_resolution). Updates
+  /// `met`.
   void rescale_pp(TargetOutcome &o, const SweptPp &swept);
   /// `met`: every asked quantity's estimate of the delivered level within its tolerance.
   void update_met(TargetOutcome &o);

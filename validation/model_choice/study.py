@@ -422,7 +422,19 @@ def metrics(d, torque):
     r["root_stress_2"] = s["root stress gear"][m].max()
     r["p_max"] = s["p_max"][m].max()
     r["roll"] = s["roll angle"][m]
+    r["pp_resolution"] = pp_resolution(r["roll"], s["STE"][m])
     return r
+
+
+def pp_resolution(roll, ste):
+    """The resolution of a swept p-p as gearfem states it (choice::ste_ripple,
+    docs/model-choice.md step 3), computed here independently with numpy: at each position
+    with two neighbours on each side, |STE - the least-squares quadratic through those four
+    (numpy.polyfit)|; twice the median of these, relative to the p-p. nan with fewer than four."""
+    x, y = np.asarray(roll, dtype=float), np.asarray(ste, dtype=float)
+    r = [abs(y[i] - np.polyval(np.polyfit(x[[i - 2, i - 1, i + 1, i + 2]] - x[i], y[[i - 2, i - 1, i + 1, i + 2]], 2), 0))
+         for i in range(2, len(y) - 2)]
+    return 2 * float(np.median(r)) / float(y.max() - y.min()) if len(r) >= 4 else float("nan")
 
 
 def true_errors(r, ref):

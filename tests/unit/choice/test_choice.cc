@@ -449,6 +449,10 @@ TEST(ChoiceRipple, ZeroOnACubicAndEightThirdsOfAnAlternatingRipple)
   EXPECT_NEAR(choice::ste_ripple(x, smooth), 0, 1e-18);
   EXPECT_NEAR(choice::ste_ripple(x, rippled), 8 * d / 3, 1e-6 * d);
   EXPECT_EQ(choice::ste_ripple({0, 1, 2}, {1, 2, 3}), 0);
+  // An even count takes the mean of the two middle residuals: a spike s at position 2 of 8
+  // (weights 2/3 at +-1, -1/6 at +-2) leaves residuals s, 2/3 s, 1/6 s, 0 at positions 2-5;
+  // the median is (2/3 + 1/6) s / 2 = 5 s / 12.
+  EXPECT_NEAR(choice::ste_ripple({0, 1, 2, 3, 4, 5, 6, 7}, {0, 0, 1e-6, 0, 0, 0, 0, 0}), 5e-6 / 12, 1e-18);
 }
 
 TEST(ChoiceSweep, SweptPpIsEachTorquesRangeUpToTheFirstTorqueNotSwept)
@@ -478,8 +482,9 @@ TEST(ChoiceSweep, AbandonsASweepOnlyWhereTheRefinementFollows)
 {
   // A delivered level against its companion (rho 2, order 2: e = (b - a) / (1 - 4)), three
   // torques, four samples each. At the zone samples 0 and 2 the companion differs by 0 and
-  // 0.06 um: the Richardson part of the p-p error is 0.02 um; with a swept p-p of 4 um and a
-  // ripple r, the estimate is (0.02 um + 2 r) / 4 um (closed form of swept_pp_estimate).
+  // 0.108 um: the Richardson part of the p-p error is 0.036 um; with a swept p-p of 4 um and a
+  // ripple r, the estimate is sqrt(0.036^2 + (2 r)^2) um / 4 um (closed form of
+  // swept_pp_estimate: independent parts, root sum of squares).
   dealii::ParameterHandler prm;
   auto in = parse(test::parker_pair("subsection Solve\n  set Torques = 100, 200, 300\nend\n"), prm);
   choice::TargetOutcome o;
@@ -493,7 +498,7 @@ TEST(ChoiceSweep, AbandonsASweepOnlyWhereTheRefinementFollows)
         solve::EstimatedQuantities q;
         q.ste = (4 + (i == 2 ? 3.0 : 0.0)) * 1e-6;
         delivered.samples.push_back(q);
-        q.ste += i == 2 ? 0.06e-6 : 0;
+        q.ste += i == 2 ? 0.108e-6 : 0;
         companion.samples.push_back(q);
       }
   companion.role = "companion";
@@ -507,10 +512,16 @@ TEST(ChoiceSweep, AbandonsASweepOnlyWhereTheRefinementFollows)
   const choice::FixedSettings fixed{};
   choice::TargetOptions options;
 
-  const choice::SweptPp small{{4e-6}, {0.005e-6}}, large{{4e-6}, {0.02e-6}};
-  EXPECT_NEAR(choice::swept_pp_estimate(o, small), (0.02 + 0.01) / 4, 1e-9);
-  EXPECT_NEAR(choice::swept_pp_estimate(o, large), (0.02 + 0.04) / 4, 1e-9);
-  // 0.75 % meets the 1 % target: the sweep goes on; 1.5 % does not: it stops.
+  const choice::SweptPp small{{4e-6}, {0.005e-6}}, large{{4e-6}, {0.024e-6}};
+  EXPECT_NEAR(choice::swept_pp_estimate(o, small), std::hypot(0.036, 0.01) / 4, 1e-9);
+  EXPECT_NEAR(choice::swept_pp_estimate(o, large), std::hypot(0.036, 0.048) / 4, 1e-9);
+  // Never below either part: the ripple part is the p-p's resolution.
+  choice::PpParts parts;
+  choice::swept_pp_estimate(o, large, &parts);
+  EXPECT_NEAR(parts.richardson, 0.009, 1e-9);
+  EXPECT_NEAR(parts.twice_ripple, 0.012, 1e-9);
+  EXPECT_NEAR(parts.resolution, 0.012, 1e-9);
+  // 0.93 % meets the 1 % target: the sweep goes on; 1.5 % does not: it stops.
   EXPECT_FALSE(choice::abandon_sweep(o, in, fixed, options, small, 1, 0.3));
   EXPECT_TRUE(choice::abandon_sweep(o, in, fixed, options, large, 1, 0.3));
   // Where the refinement would not follow, the sweep is not stopped: h_contact set in the
@@ -533,9 +544,10 @@ TEST(ChoiceSweep, AbandonsASweepOnlyWhereTheRefinementFollows)
   choice::rescale_pp(o, large);
   EXPECT_NEAR(o.delivered_level().estimate[1], 0.015, 1e-9);
   EXPECT_FALSE(o.met);
-  // ... and keeps its parts: 0.02 / 4 Richardson, 2 x 0.02 / 4 ripple, at the first torque.
-  EXPECT_NEAR(o.delivered_level().pp_richardson, 0.005, 1e-9);
-  EXPECT_NEAR(o.delivered_level().pp_ripple, 0.01, 1e-9);
+  // ... and keeps its parts: 0.036 / 4 Richardson, 2 x 0.024 / 4 ripple, at the first torque.
+  EXPECT_NEAR(o.delivered_level().pp_richardson, 0.009, 1e-9);
+  EXPECT_NEAR(o.delivered_level().pp_ripple, 0.012, 1e-9);
+  EXPECT_NEAR(o.delivered_level().pp_resolution, 0.012, 1e-9);
   EXPECT_DOUBLE_EQ(o.delivered_level().pp_torque, 100);
   choice::rescale_pp(o, small);
   EXPECT_TRUE(o.met);
