@@ -162,8 +162,8 @@ namespace gearfem::choice
           if (target.tolerance[q] > 0)
             driver += std::string(" ") + AccuracyTarget::names()[q] + " " +
                       pc(predicted_error(static_cast<Quantity>(q), h, m, half_width));
-        driver += " (order 2 from the worst measured: mean STE 1.94 % at m/10, p-p 1.3 % at m/30 (the run's own estimate with "
-                  "the swept ripple) and not coarser than m/20, where the tip-corner contact is unresolved, p_max 8.1 % at m/30)";
+        driver += " (order 2 from the worst measured: mean STE 1.94 % at m/10, p-p 1.3 % at m/30 (an envelope of the run's own "
+                  "estimate with the swept ripple) and not coarser than m/20, where the tip-corner contact is unresolved, p_max 8.1 % at m/30)";
         if (h < c.ladder_h_contact * (1 - 1e-9))
           driver += "; finer than the module alone asks (m/" + std::to_string(int(std::lround(m / c.ladder_h_contact))) +
                     ") for the light load: the p-p estimate is also taken as " + pc(pp_per_half_width) +
