@@ -144,8 +144,9 @@ namespace gearfem::contact
                                         const ContactSolution *warm)
   {
     // Projection hints live for one configuration: its geometric iterations (and load cuts)
-    // start from each other, and a configuration's result does not depend on what was
-    // solved before it (a resumed sweep equals an uninterrupted one bit for bit).
+    // start from each other, and the projections do not depend on what was solved before.
+    // (The flexibility columns cached from earlier positions do, in their last bits, so a
+    // resumed sweep equals an uninterrupted one to the iteration's tolerance, not bit for bit.)
     hints_.clear();
     // The contact zone at the start: the flexibility and the search keep to it.
     const double q0 = control == Control::displacement ? value : (warm ? warm->q : 0.0);

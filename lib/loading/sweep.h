@@ -6,7 +6,7 @@
 // checkpoint journal); the sweep itself evaluates and writes nothing (loading does not
 // depend on post). A sweep can start from a checkpoint (SweepStart): the positions before
 // it are skipped and the warm start is the one the uninterrupted run had, so the resumed
-// results equal those of an uninterrupted run.
+// results equal those of an uninterrupted run to the contact tolerance.
 #include "contact/gear_contact.h"
 
 #include <string>

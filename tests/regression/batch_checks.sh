@@ -15,9 +15,10 @@
 #   batch_checks.sh shared  GEARFEM SRC_DIR  with Contact/Micro-geometry = gap, designs that differ
 #                                            only in tip relief share one factorised model (job.txt
 #                                            shared_model), and each job's sweep equals `gearfem
-#                                            solve` of its design.prm (a fresh model) to 1e-10
-#                                            (Batch/Condensed cycle = off); with the default (auto)
-#                                            the three sharing designs run on one condensed cycle
+#                                            solve` of its design.prm (a fresh model) to 1e-9 of
+#                                            each column's scale (Batch/Condensed cycle = off);
+#                                            with the default (auto) the three sharing designs run
+#                                            on one condensed cycle
 #                                            (job.txt route) within 0.1 % STE and 0.5 % root
 #                                            stress of those fresh solves
 #   batch_checks.sh isolation GEARFEM SRC_DIR  a design that crashes its worker on purpose
@@ -243,16 +244,20 @@ for j in ("none", "short", "long", "soft"):
     h2, b = rows(f"{w}/solo_{j}/sweep.csv")
     assert h == h2 and len(a) == len(b) == 10, (j, len(a), len(b))
     t = h.index("time [s]")
+    # To the contact tolerance, 1e-9 of each column's scale: a re-used model's cached
+    # flexibility columns differ in their last bits from a fresh model's (see cli_checks.sh
+    # resume), which moves the results by about 1e-12 of a column's scale.
+    scale = [max([1.0] + [abs(float(r[i])) for r in a]) for i in range(len(h))]
     for x, y in zip(a, b):
         for i, (u, v) in enumerate(zip(x, y)):
             if i != t:
-                assert abs(float(u) - float(v)) <= 1e-10 * max(1.0, abs(float(u))), (j, h[i], u, v)
+                assert abs(float(u) - float(v)) <= 1e-9 * scale[i], (j, h[i], u, v)
     ste[j] = [float(r[h.index("STE [um]")]) for r in a]
 # The relief changes the STE where it acts (the re-targeting is not a no-op), and the longer
 # relief at the same amount removes more material, so its mean STE is at least that of the short.
 assert max(abs(u - v) for u, v in zip(ste["none"], ste["long"])) > 0.1, (ste["none"], ste["long"])
 assert sum(ste["long"]) >= sum(ste["short"]) >= sum(ste["none"]), ste
-print("re-used models: short and long equal fresh solves of their design.prm to 1e-10")
+print("re-used models: short and long equal fresh solves of their design.prm to 1e-9 of each column")
 PY
     # The default route: none, short and long share a model and ask for 6 torque sweeps, so
     # they run on one condensed cycle; soft has its own model and 2 sweeps: a full solve.

@@ -52,8 +52,12 @@ case $mode in
     ;;
   resume)
     # `gearfem solve` journals every finished position; a run killed with SIGKILL
-    # continues with --resume and its results equal those of an uninterrupted run (every
-    # column but the wall time, to 1e-12 relative: the warm start is restored exactly).
+    # continues with --resume and its results equal those of an uninterrupted run: every
+    # column but the wall time, to 1e-9 of the column's largest magnitude (at least 1), the
+    # contact iteration's tolerance. The warm start is restored exactly, but the flexibility
+    # columns a run has cached differ in their last bits with the positions it solved before
+    # (the block solves that filled them), and the iteration carries that into the results:
+    # measured up to 7e-12 of a column's scale (normal-force power, a sum with cancellation).
     case=$arg/tests/regression/data/resume_sweep.prm
     "$gearfem" solve "$case" --output-dir "$work/full" > "$work/full.log" 2>&1 || { cat "$work/full.log"; fail "uninterrupted run failed"; }
     [ ! -e "$work/full/solve.journal" ] || fail "journal left after a complete run"
@@ -89,11 +93,12 @@ for name in ("sweep.csv", "pairs.csv", "pressure.csv", "line_of_action.csv", "pa
     ra, rb = list(csv.reader(ra)), list(csv.reader(rb))
     assert ra[0] == rb[0] and len(ra) == len(rb), (name, len(ra), len(rb))
     skip = {i for i, h in enumerate(ra[0]) if h == "time [s]"}
+    scale = [max([1.0] + [abs(float(x[i])) for x in ra[1:]]) for i in range(len(ra[0]))]
     for x, y in zip(ra[1:], rb[1:]):
         for i, (u, v) in enumerate(zip(x, y)):
             if i not in skip:
                 u, v = float(u), float(v)
-                assert abs(u - v) <= 1e-12 * max(1.0, abs(u)), (name, ra[0][i], u, v)
+                assert abs(u - v) <= 1e-9 * scale[i], (name, ra[0][i], u, v, scale[i])
     print(name, len(ra) - 1, "rows equal")
 PY
     [ ! -e "$work/kill/solve.journal" ] || fail "journal left after the resumed run completed"
