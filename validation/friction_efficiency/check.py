@@ -38,6 +38,10 @@ TOL_SLIDE_LOSS, TOL_SLIDE_STE = 1e-3, 1e-4   # check 8
 MAX_COST = 1.3          # check 9
 TOL_LAW = 1e-6          # check 10
 BEAM_BAND = (0.5, 2.0)  # check 6: FE / beam estimate
+# The runs with friction of each pair (checks 1, 2).
+FRICTION_RUNS = {"demo": ["demo_mu03", "demo_mu05", "demo_mu08", "demo_pen05", "demo_tol1e-3", "demo_tol1e-5",
+                          "demo_iso", "demo_agma"],
+                 "fzg": ["fzg_mu03", "fzg_mu05", "fzg_mu08", "fzg_mu05_fine"]}
 
 
 # ----------------------------------------------------------------------------- reading
@@ -281,26 +285,22 @@ def pct(v):
     return f"{100 * v:+.3f} %"
 
 
-# ----------------------------------------------------------------------------- main
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--out", required=True)
-    ap.add_argument("--root", required=True)
-    a = ap.parse_args()
-    out = a.out
-    c = Checks(CASE, out)
-    md = ["# friction_efficiency: figures", ""]
-    R = {}
+# ----------------------------------------------------------------------------- checks
+def mu_of(run, geo, name, T):
+    """The coefficient of a run at torque T, from check.py's own evaluation of its input."""
+    p = run(name).prm
+    law = p.get("Contact/Friction law", "constant")
+    g = geo["demo" if name.startswith("demo") else "fzg"]
+    Ra1, Ra2 = float(p.get("Contact/Roughness gear 1", 0)), float(p.get("Contact/Roughness gear 2", 0))
+    if law == "ISO/TR 14179-2":
+        return iso_14179_2(g, T, float(p["Contact/Oil viscosity"]), Ra1, Ra2, float(p.get("Contact/Lubricant factor", 1)))
+    if law == "AGMA 925":
+        return agma_925(Ra1, Ra2)
+    return float(p.get("Contact/Friction coefficient", 0))
 
-    def run(name):
-        if name not in R:
-            R[name] = Run(out, name)
-        return R[name]
 
-    geo = {"demo": Geometry(read_prm(os.path.join(out, "demo.prm"))),
-           "fzg": Geometry(read_prm(os.path.join(out, "fzg_c.prm")))}
-
-    # 0. The closed-form geometry against gearfem's path of contact (the basis of checks 2, 3, 6).
+def check_geometry(c, md, geo, out):
+    """0. The closed-form geometry against gearfem's path of contact (the basis of checks 2, 3, 6)."""
     for label, key, Td, Tl in PAIRS:
         g = geo[key]
         c.true(f"{label}: sharp tips, no thickness allowance, no tip relief (r_a = r + (h_aP* + x - k*) m ends the involute)",
@@ -315,23 +315,9 @@ def main():
                f"eps_2 {g.eps2:.5f}, eps_alpha {g.eps:.5f}; H_V {g.HV:.6f}; A..E " +
                ", ".join(f"{v:+.4f}" for v in ref.values()) + " deg", ""]
 
-    friction_runs = {"demo": ["demo_mu03", "demo_mu05", "demo_mu08", "demo_pen05", "demo_tol1e-3", "demo_tol1e-5",
-                              "demo_iso", "demo_agma"],
-                     "fzg": ["fzg_mu03", "fzg_mu05", "fzg_mu08", "fzg_mu05_fine"]}
 
-    def mu_of(name, T):
-        """The coefficient of a run at torque T, from check.py's own evaluation of its input."""
-        p = run(name).prm
-        law = p.get("Contact/Friction law", "constant")
-        g = geo["demo" if name.startswith("demo") else "fzg"]
-        Ra1, Ra2 = float(p.get("Contact/Roughness gear 1", 0)), float(p.get("Contact/Roughness gear 2", 0))
-        if law == "ISO/TR 14179-2":
-            return iso_14179_2(g, T, float(p["Contact/Oil viscosity"]), Ra1, Ra2, float(p.get("Contact/Lubricant factor", 1)))
-        if law == "AGMA 925":
-            return agma_925(Ra1, Ra2)
-        return float(p.get("Contact/Friction coefficient", 0))
-
-    # 1. Energy balance.
+def check_balance(c, md, run):
+    """1. Energy balance of every friction run, and the frictionless offset."""
     md += ["## 1. Energy balance", "",
            "| run | T1 [N m] | max \\|residual\\| / P_loss | mean P_loss [W] | mean P_normal [W] | eta (torques) | eta (loss) | "
            "friction-induced mean (P_in - P_out) - P_loss, of P_loss |", "|---|---|---|---|---|---|---|---|"]
@@ -339,7 +325,7 @@ def main():
                 "fzg_mu03": "fzg_plain", "fzg_mu05": "fzg_plain", "fzg_mu08": "fzg_plain", "fzg_mu05_fine": "fzg_plain_fine"}
     for label, key, Td, Tl in PAIRS:
         worst_pos, worst_diff, worst_raw = (0.0, ""), (0.0, ""), (0.0, "")
-        for name in friction_runs[key]:
+        for name in FRICTION_RUNS[key]:
             for T in run(name).torques():
                 sw, _ = run(name).at(T)
                 P_in, P_out, res = balance(sw)
@@ -374,7 +360,10 @@ def main():
                "does not shrink with more positions at the design load of FZG C (README)")
     md.append("")
 
-    # 2. Dissipation against the closed-form sliding kinematics, with the FE's load sharing.
+
+def check_kinematics(c, md, geo, run):
+    """2. Dissipation against the closed-form sliding kinematics, with the FE's load sharing;
+    the direction of friction and the tooth convention. Returns the closed-form losses by (run, torque)."""
     md += ["## 2. Dissipation against closed-form kinematics (FE load sharing)", "",
            "| run | T1 [N m] | mu | FE mean P_loss [W] | closed form [W] | difference | of which beyond A/E [W] |",
            "|---|---|---|---|---|---|---|"]
@@ -383,10 +372,10 @@ def main():
         g = geo[key]
         worst = (0.0, "")
         sign_bad, sign_n = 0, 0
-        for name in friction_runs[key]:
+        for name in FRICTION_RUNS[key]:
             for T in run(name).torques():
                 sw, pr = run(name).at(T)
-                mu = mu_of(name, T)
+                mu = mu_of(run, geo, name, T)
                 tot, beyond = closed_loss(g, sw, pr, mu)
                 closed[(name, T)] = (tot, beyond)
                 dv = tot.mean() / sw["power loss"].mean() - 1
@@ -402,10 +391,10 @@ def main():
         # Output consistency: sweep.csv's friction force = mu sum F_n of the pairs, its power loss = the
         # pairs' sum, at every position whose pairs are all outside the ramp near C.
         worst_c = 0.0
-        for name in friction_runs[key]:
+        for name in FRICTION_RUNS[key]:
             for T in run(name).torques():
                 sw, pr = run(name).at(T)
-                mu = mu_of(name, T)
+                mu = mu_of(run, geo, name, T)
                 s = g.s_of(pr["roll angle"], pr["pinion tooth"])
                 for j, pos in enumerate(sw["position"]):
                     q = pr["position"] == pos
@@ -429,8 +418,11 @@ def main():
            f"radius {float(pr['radius pinion'][q][0]):.3f} mm" if q.any() else "missing",
            f"< r_w1 {geo['demo'].rw1:.3f} mm", "the tooth convention of pairs.csv")
     md.append("")
+    return closed
 
-    # 3. Ohlendorf's H_V.
+
+def check_ohlendorf(c, md, geo, run, closed):
+    """3. Ohlendorf's H_V. Returns the (pair, torque, mu, loss / input power) points of the plot."""
     md += ["## 3. Against Ohlendorf's H_V", "",
            "| pair | T1 [N m] | mu | FE P_loss [W] | mu H_V P_in [W] | FE / Ohlendorf | idealised sharing at the FE positions | "
            "closed form, FE sharing | FE - closed (FE sharing) | sharing and extension | sampling of the steps at B, D | "
@@ -494,8 +486,11 @@ def main():
             c.at_most(f"{label} at {T:g} N m: loss / mu, max/min - 1 over mu 0.03, 0.05, 0.08", spread, TOL_LINEAR,
                       "Coulomb: P_loss proportional to mu (friction shifts the pair loads slightly)")
     md.append("")
+    return ohl_points
 
-    # 4. mu = 0 bit for bit.
+
+def check_mu_zero(c, out):
+    """4. mu = 0 bit for bit."""
     same, detail = True, []
     for f in ("sweep.csv", "pairs.csv", "pressure.csv", "line_of_action.csv"):
         rows = []
@@ -510,7 +505,10 @@ def main():
     c.true("Friction coefficient = 0 written out against omitted (demo, 200 and 20 N m): every value except time",
            same, "; ".join(detail), "identical strings", "the frictionless path is untouched")
 
-    # 5. Smoothness of the friction effect (mu 0.08 against frictionless).
+
+def check_smoothness(c, md, geo, run):
+    """5. Smoothness of the friction effect (mu 0.08 against frictionless). Returns the tooth
+    histories by (pair, torque) for the plot."""
     md += ["## 5. Smoothness of the friction effect (mu 0.08 - frictionless)", "",
            "| pair | T1 [N m] | quantity | max \\|D2 (x_mu - x_0)\\| | max \\|D2 x_0\\| | ratio | step at C of x_mu - x_0 |",
            "|---|---|---|---|---|---|---|"]
@@ -547,8 +545,11 @@ def main():
                   f"worst ({worst[1]})", worst[0], 1.0,
                   "no jump beyond the frictionless roughness (second differences; not across C)")
     md.append("")
+    return smooth
 
-    # 6. Sign and size of the root-stress change at the HPSTCs (named positions).
+
+def check_root_stress(c, md, geo, run):
+    """6. Sign and size of the root-stress change at the HPSTCs (named positions)."""
     md += ["## 6. Root stress with friction (mu 0.08) at B and D, per unit pair load", "",
            "| pair | T1 [N m] | where | FE change of sigma/F_n | beam (bending) | FE / beam | beam with direct stress | "
            "simple mu e/(h_F cos a_F) | h_F [mm] | e [mm] |", "|---|---|---|---|---|---|---|---|---|---|"]
@@ -585,7 +586,9 @@ def main():
                        "friction direction (Dudley); moment of the friction force on the ISO 6336-3 section")
     md.append("")
 
-    # 7. Penalty against Lagrange, mu 0.05.
+
+def check_method(c, run):
+    """7. Penalty against Lagrange, mu 0.05."""
     sl, _ = run("demo_mu05").at(200.0)
     sp, _ = run("demo_pen05").at(200.0)
     c.at_most("penalty against Lagrange, demo mu 0.05: max |STE_pen / STE_lag - 1| over the cycle",
@@ -597,7 +600,9 @@ def main():
     c.info("penalty against Lagrange, frictionless: max |STE_pen / STE_lag - 1|",
            f"{np.max(np.abs(sp0['STE'] / s00['STE'] - 1)):.3e}", "—", "the penalty's own offset (penetration)")
 
-    # 8. Sliding tolerance.
+
+def check_sliding_tolerance(c, geo, run):
+    """8. Sliding tolerance."""
     ref, _ = run("demo_mu05").at(200.0)
     for name, tol in (("demo_tol1e-3", 1e-3), ("demo_tol1e-5", 1e-5)):
         s_, _ = run(name).at(200.0)
@@ -612,7 +617,9 @@ def main():
         c.info(f"sliding tolerance {tol:g}: largest root-stress change", f"{pct(dr[j])} at roll {s_['roll angle'][j]:+.3f} deg",
                "—", f"ramp half-width {width * 1e3:.1f} um on the line of action = {geo['demo'].roll(width):.4f} deg of roll")
 
-    # 9. Cost.
+
+def check_cost(c, out, run):
+    """9. Cost."""
     t = {}
     for name in ("demo_plain", "demo_mu05", "demo_mu0", "demo_mu08"):
         s_, _ = run(name).at(200.0)
@@ -633,13 +640,15 @@ def main():
     c.info("cost: median time per position, frictionless / with friction", f"{t0 * 1e3:.1f} / {t1 * 1e3:.1f} ms", "—",
            "sweep.csv time column, positions 2..40")
 
-    # 10. The friction laws.
+
+def check_laws(c, geo, run):
+    """10. The friction laws."""
     for name, T in (("demo_iso", 200.0), ("demo_iso", 20.0), ("demo_agma", 200.0)):
         r_ = run(name)
         coeffs = [float(v) for v in str(r_.attribute("friction_coefficients")).split(",")] if r_.attribute("friction_coefficients") else []
         ts = [float(v) for v in r_.prm.get("Solve/Torques", "200").split(",")]
         used = coeffs[ts.index(T)] if len(coeffs) == len(ts) else None
-        ref_mu = mu_of(name, T)
+        ref_mu = mu_of(run, geo, name, T)
         law = r_.prm["Contact/Friction law"]
         # The attribute is written with 6 significant digits: compared at that precision.
         digits = len(re.sub(r"[^0-9]", "", f"{used:g}".split("e")[0]).lstrip("0")) if used is not None else 6
@@ -653,7 +662,9 @@ def main():
         c.rel(f"{law} at {T:g} N m: coefficient applied in the solve (median |friction force| / F_n of the pairs)", applied,
               ref_mu, TOL_LAW, "pairs.csv")
 
-    # 11. Bad inputs.
+
+def check_bad_inputs(c, out):
+    """11. Bad inputs."""
     for name, entry in (("bad_negative", "Contact/Friction coefficient"), ("bad_above_one", "Contact/Friction coefficient"),
                         ("bad_iso_no_oil", "Contact/Oil viscosity")):
         rc = int(open(os.path.join(out, name + ".rc")).read().strip())
@@ -661,6 +672,38 @@ def main():
         c.true(f"bad input {name}: exit status 2 and the message names {entry}", rc == 2 and entry in log,
                f"exit {rc}; {log.strip().splitlines()[-1][:110] if log.strip() else 'no message'}", f"exit 2, '{entry}'",
                "gearfem's exit status contract")
+
+
+# ----------------------------------------------------------------------------- main
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--root", required=True)
+    a = ap.parse_args()
+    out = a.out
+    c = Checks(CASE, out)
+    md = ["# friction_efficiency: figures", ""]
+    R = {}
+
+    def run(name):
+        if name not in R:
+            R[name] = Run(out, name)
+        return R[name]
+
+    geo = {"demo": Geometry(read_prm(os.path.join(out, "demo.prm"))),
+           "fzg": Geometry(read_prm(os.path.join(out, "fzg_c.prm")))}
+    check_geometry(c, md, geo, out)
+    check_balance(c, md, run)
+    closed = check_kinematics(c, md, geo, run)
+    ohl_points = check_ohlendorf(c, md, geo, run, closed)
+    check_mu_zero(c, out)
+    smooth = check_smoothness(c, md, geo, run)
+    check_root_stress(c, md, geo, run)
+    check_method(c, run)
+    check_sliding_tolerance(c, geo, run)
+    check_cost(c, out, run)
+    check_laws(c, geo, run)
+    check_bad_inputs(c, out)
 
     secs = open(os.path.join(out, "runs_seconds.txt")).read().strip() if os.path.exists(os.path.join(out, "runs_seconds.txt")) else "?"
     c.info("run time of the gearfem runs", f"{secs} s", "≤ 15 min", "2 shared cores, at most 2 jobs")
