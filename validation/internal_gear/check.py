@@ -78,25 +78,19 @@ def g(x, d=4):
     return f"{x:.{d}g}"
 
 
-def main():
+def parse_args():
+    """Command line of check.py."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("log", help="output of validate_internal_gear")
     ap.add_argument("--status", type=int, default=0, help="exit status of validate_internal_gear")
     ap.add_argument("--table", help="tracked markdown table to write (no timings)")
     ap.add_argument("--plot", help="rim-thickness figure to write (PNG)")
     ap.add_argument("--out", help="results folder (checks.md)")
-    args = ap.parse_args()
-    rows = parse(args.log)
-    c = Checks("internal_gear", args.out)
-    c.true("validate_internal_gear exit status", args.status == 0, f"exit {args.status}", "exit 0",
-           "tests/unit/contact/validate_internal_gear.cc")
-    if not rows.get("geometry"):
-        c.true("geometry row present", False, "missing", "1 row", "validate_internal_gear output")
-        return c.finish()
-    geo = rows["geometry"][0]
-    md = []
+    return ap.parse_args()
 
-    # ---------------------------------------------------------------- a. Hertz at C
+
+def check_hertz(c, rows, geo, md):
+    """a. p_max at C against Hertz; appends the table to md."""
     md += ["## a. Hertz at the pitch point C (phi1 = 0)", "",
            f"rho1 = r_w1 sin alpha_w, rho2 = r_w2 sin alpha_w; P = force of the pair at C / b; {JOHNSON}.", "",
            "| T1 [N m] | h [mm] | a/h | pairs | share of the pair at C | force at C [N] | a Hertz [mm] | "
@@ -122,7 +116,10 @@ def main():
     if hz:
         md += ["", f"rho1 = {rho1:.4f} mm, rho2 = {rho2:.4f} mm, R = {1 / (1 / rho1 - 1 / rho2):.4f} mm.", ""]
 
-    # ---------------------------------------------------------------- b. rim thickness
+
+def rim_peaks(c, rows):
+    """Peak rim rows per (support, m_B) and the (support, m_B) models missing from the log;
+    checks that every model is complete."""
     by = defaultdict(list)
     for r in rows["rim"]:
         by[(r["support"], r["m_B"])].append(r)
@@ -136,8 +133,12 @@ def main():
            "; ".join(short) or "all complete", f"{POSITIONS} each", "validate_internal_gear.cc")
     missing = [(s, m) for s in SUPPORTS for m in M_B if (s, m) not in peak]
     c.true("rim models present", not missing, f"{len(missing)} missing", "all", "validate_internal_gear.cc")
-    if missing:
-        return finish(c, args, md)
+    return peak, missing
+
+
+def rim_tables(rows, geo, peak, md):
+    """b. Tables of the ring root stress against m_B; returns sigma(2.0) per support,
+    sigma/sigma(2.0) per support and m_B, and the module."""
     ht = peak[("clamped", 2.0)][0]["h_t_mm"]
     mod = geo["m_mm"]
     ref = {s: peak[(s, 2.0)][0]["sigma_MPa"] for s in SUPPORTS}
@@ -171,6 +172,11 @@ def main():
         md.append(f"| {g(mB)} | " + " | ".join(
             f"{peak[(s, mB)][1]['sigma_fine_MPa']:.1f} (tooth {int(peak[(s, mB)][1]['fine_tooth'])}, "
             f"{peak[(s, mB)][1]['fine_side']})" for s in SUPPORTS) + " |")
+    return ref, ratios, mod
+
+
+def check_rim(c, rows, peak, ref, ratios, md):
+    """b. K_B of lib/ against the closed form, clamped plateau, bolted rims, fillet-mesh check."""
     for r in rows["rim"]:
         if abs(r["K_B_lib"] / K_B(r["m_B"]) - 1) > 1e-5:  # the log prints 6 digits
             c.true("rating::agma::K_B against the closed form", False, g(r["K_B_lib"], 8), g(K_B(r["m_B"]), 8), AGMA)
@@ -201,7 +207,9 @@ def main():
         f"h_fillet {g(peak[k][0]['h_fillet_mm'])} mm: {peak[k][0]['sigma_MPa']:.1f} MPa "
         f"({(peak[k][0]['sigma_MPa'] / ref['clamped'] - 1) * 100:+.2f} % against 0.1 mm)" for k in fm) + ".", ""]
 
-    # ---------------------------------------------------------------- c. ISO 6336-3
+
+def check_iso(c, rows, ref, md):
+    """c. Ring root stress of the thick clamped rim against ISO 6336-3 method B."""
     iso = {r["T1_Nm"]: r for r in rows["iso"]}
     T1 = rows["rim"][0]["T1_Nm"]
     if T1 in iso and rows["iso_fe"]:
@@ -242,7 +250,9 @@ def main():
     else:
         c.true("ISO rows present", False, "missing", "rows iso and iso_fe", "validate_internal_gear.cc")
 
-    # ---------------------------------------------------------------- d. equilibrium
+
+def check_equilibrium(c, rows, md):
+    """d. Moments on the ring and the pinion bore against T1 and u T1."""
     eq = rows["equilibrium"]
     if eq:
         e = eq[0]
@@ -275,6 +285,27 @@ def main():
                f"{int(e['n_pairs'])} loaded pair: ring moment {e['torque_gear_Nm']:.4f} N m against u T1 = {uT:.4f} "
                f"N m ({(e['torque_gear_Nm'] / uT - 1):+.1e}); bore reaction {e['torque_reaction_Nm']:.4f} N m.", ""]
     md += [f"Bore reaction over all {len(allrows)} solved positions: max |M/T1 - 1| = {worst:.1e}.", ""]
+
+
+def main():
+    args = parse_args()
+    rows = parse(args.log)
+    c = Checks("internal_gear", args.out)
+    c.true("validate_internal_gear exit status", args.status == 0, f"exit {args.status}", "exit 0",
+           "tests/unit/contact/validate_internal_gear.cc")
+    if not rows.get("geometry"):
+        c.true("geometry row present", False, "missing", "1 row", "validate_internal_gear output")
+        return c.finish()
+    geo = rows["geometry"][0]
+    md = []
+    check_hertz(c, rows, geo, md)
+    peak, missing = rim_peaks(c, rows)
+    if missing:
+        return finish(c, args, md)
+    ref, ratios, mod = rim_tables(rows, geo, peak, md)
+    check_rim(c, rows, peak, ref, ratios, md)
+    check_iso(c, rows, ref, md)
+    check_equilibrium(c, rows, md)
     if args.plot:
         plot(args.plot, peak, ratios, mod)
     return finish(c, args, md)
