@@ -88,14 +88,8 @@ def est_error(values):
     return d1 / (2 ** p - 1), p
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--out", required=True)
-    out = ap.parse_args().out
-    c = Checks("seed001_root_stress", out)
-    md = []
-
-    # ---- 1. positions: B and D against AGMA 908 closed forms ------------------------------
+def check_positions(c, out):
+    """Section 1: B and D against the AGMA 908 closed forms. Returns (pair.csv, roll of D, roll of B)."""
     pr = pair_csv(os.path.join(out, "profile", "pair.csv"))
     m, alpha = pr["module"], math.radians(pr["working pressure angle"])
     rb1, rb2, ra1, ra2 = pr["base radius 1"], pr["base radius 2"], pr["tip radius 1"], pr["tip radius 2"]
@@ -118,8 +112,12 @@ def main():
     pts = {int(r["point (0 none; 1 A; 2 B; 3 C; 4 D; 5 E)"]): r["roll angle"] for r in sweep}
     c.abs("solve position named D: roll angle", pts.get(4), roll(C4), 1e-6, "(C4 - C3)/r_b1", " deg")
     c.abs("solve position named B: roll angle", pts.get(2), roll(C2), 1e-6, "(C2 - C3)/r_b1", " deg")
+    return pr, roll(C4), roll(C2)
 
-    # ---- 2. AGMA: gearfem rate against the thesis' AGMA tables ---------------------------
+
+def check_agma(c, out):
+    """Section 2: gearfem rate against the thesis' AGMA tables. Returns {"KH", "agma", "agma_kh",
+    "nominal", "iso"}: K_H and the root stresses per member at TORQUES."""
     tq, rt = rating(os.path.join(out, "rate", "rating.csv"))
     _, rk = rating(os.path.join(out, "rate_thesis_kh", "rating.csv"))
     KH = rt[("AGMA", "K_H")][0]
@@ -140,14 +138,23 @@ def main():
         s = "1" if k == "pinion" else "2"
         c.rel(f"AGMA Y_J {k}: 908 rack layout vs generated fillet", rt[("AGMA", "Y_J" + s + ",gen")][0],
               rt[("AGMA", "Y_J" + s)][0], 0.005, "gearfem rate, two constructions of the same fillet")
+    return {"KH": KH, "agma": agma, "agma_kh": agma_kh, "nominal": nominal, "iso": iso}
 
-    # ---- 3. FE: mesh ladder ---------------------------------------------------------------
+
+def ladder_curves(out):
+    """{run name: member_curves} of the h_fillet and h_contact ladders."""
     curves = {}
     for hc in (0.05,):
         for hf in HF_LADDER:
             curves[run_name(hc, hf)] = member_curves(out, run_name(hc, hf))
     for hc in HC_LADDER:
         curves[run_name(hc, 0.125)] = member_curves(out, run_name(hc, 0.125))
+    return curves
+
+
+def check_mesh_ladder(c, curves):
+    """Section 3: discretisation error at 500 and 200 N m. Returns (summary lines,
+    {(T, member, quantity): (finest value, total error estimate)})."""
     ladder_rows, err = [], {}
     for T in (500.0, 200.0):
         for k in ("pinion", "gear"):
@@ -164,18 +171,18 @@ def main():
                                    + " / ".join(f"{v:.2f}" for v in qc) + f" | {100 * ec / qc[-1]:+.2f} (p {pc:.2f}) | {100 * grid / q:.2f} | {100 * total / q:.2f} |")
                 c.at_most(f"FE {k} root stress {what}, {T:g} N m: estimated discretisation error", 100 * total / q, 1.0,
                           "Richardson on the h_fillet and h_contact ladders (observed order in [1, 2]) + position grid; requirement < 1 %", " %")
-    md += ["## Mesh ladder (3-tooth sectors, Q2)", "",
-           "h_fillet 0.5 / 0.25 / 0.125 / 0.0625 mm at h_contact 0.05 mm; h_contact 0.2 / 0.1 / 0.05 mm at h_fillet 0.125 mm. "
-           "Error estimates in % of the finest value; total = |e_hf| + |e_hc| + position grid.", "",
-           "| T1 [N m] | member | quantity | h_fillet ladder [MPa] | e_hf [%] | h_contact ladder [MPa] | e_hc [%] | grid [%] | total [%] |",
-           "|---|---|---|---|---|---|---|---|---|"] + ladder_rows + [""]
+    md = ["## Mesh ladder (3-tooth sectors, Q2)", "",
+          "h_fillet 0.5 / 0.25 / 0.125 / 0.0625 mm at h_contact 0.05 mm; h_contact 0.2 / 0.1 / 0.05 mm at h_fillet 0.125 mm. "
+          "Error estimates in % of the finest value; total = |e_hf| + |e_hc| + position grid.", "",
+          "| T1 [N m] | member | quantity | h_fillet ladder [MPa] | e_hf [%] | h_contact ladder [MPa] | e_hc [%] | grid [%] | total [%] |",
+          "|---|---|---|---|---|---|---|---|---|"] + ladder_rows + [""]
+    return md, err
 
-    # ---- 4. FE at all torques (finest mesh): against AGMA, ISO and the thesis -----------
-    fin = curves[FINAL]
-    fe = {k: [loaded_hpstc(fin[T][k], k) for T in TORQUES] for k in ("pinion", "gear")}
-    fe_pt = {k: [at_point(fin[T][k], k) for T in TORQUES] for k in ("pinion", "gear")}
-    c.abs("FE 'at D' values: roll angle", max(p[0] for p in fe_pt["pinion"]), roll(C4), 1e-6, "(C4 - C3)/r_b1", " deg")
-    c.abs("FE 'at B' values: roll angle", min(p[0] for p in fe_pt["gear"]), roll(C2), 1e-6, "(C2 - C3)/r_b1", " deg")
+
+def check_hpstc_positions(c, fin, fe_pt, roll_d, roll_b):
+    """Section 4: the FE points at D and B, and the FE peak as the loaded HPSTC (4 torques)."""
+    c.abs("FE 'at D' values: roll angle", max(p[0] for p in fe_pt["pinion"]), roll_d, 1e-6, "(C4 - C3)/r_b1", " deg")
+    c.abs("FE 'at B' values: roll angle", min(p[0] for p in fe_pt["gear"]), roll_b, 1e-6, "(C2 - C3)/r_b1", " deg")
     for k in ("pinion", "gear"):
         ok, detail = True, []
         for T in TORQUES:
@@ -187,10 +194,15 @@ def main():
             detail.append(f"{T:g}: share {cv[i][2]:.4f} at {cv[i][0]:.2f}, next {cv[nxt][2]:.4f}" if 0 <= nxt < len(cv) else f"{T:g}: at the window end")
         c.true(f"FE {k}: the peak is the last single-pair position before the next pair touches (4 torques)", ok,
                "; ".join(detail), "share >= 0.999 at the peak, < 0.999 one step on", "definition of the loaded HPSTC (README)")
-    md += ["## Root stress at the HPSTC [MPa]", "",
-           "| T1 [N m] | member | FE loaded HPSTC (roll [deg]) | est. error [%] | FE at the geometric HPSTC (share) | AGMA nominal F_t/(b m Y_J) | "
-           f"AGMA gearfem (K_v 1.05, K_H {KH:.4f}) | AGMA gearfem, thesis K_H | AGMA thesis | ISO 6336-3 sigma_F0 | thesis FEM (mu 0.15) |",
-           "|---|---|---|---|---|---|---|---|---|---|---|"]
+
+
+def hpstc_table(fe, fe_pt, err, ag):
+    """Summary lines of the root stress at the HPSTC: FE, AGMA, ISO and the thesis."""
+    KH, agma, agma_kh, nominal, iso = ag["KH"], ag["agma"], ag["agma_kh"], ag["nominal"], ag["iso"]
+    md = ["## Root stress at the HPSTC [MPa]", "",
+          "| T1 [N m] | member | FE loaded HPSTC (roll [deg]) | est. error [%] | FE at the geometric HPSTC (share) | AGMA nominal F_t/(b m Y_J) | "
+          f"AGMA gearfem (K_v 1.05, K_H {KH:.4f}) | AGMA gearfem, thesis K_H | AGMA thesis | ISO 6336-3 sigma_F0 | thesis FEM (mu 0.15) |",
+          "|---|---|---|---|---|---|---|---|---|---|---|"]
     for k in ("pinion", "gear"):
         for i, T in enumerate(TORQUES):
             e = err.get((T, k, "loaded HPSTC"))
@@ -199,6 +211,12 @@ def main():
             md[-1] += (f"{fe_pt[k][i][1]:.2f} ({fe_pt[k][i][2]:.3f}) | {nominal[k][i]:.2f} | {agma[k][i]:.2f} | {agma_kh[k][i]:.2f} | "
                        f"{THESIS_AGMA[k][i]} | {iso[k][i]:.2f} | {THESIS_FEM[k][i]} |")
     md.append("")
+    return md
+
+
+def check_against_standards(c, fin, fe, fe_pt, nominal, iso):
+    """Section 4: FE at the loaded HPSTC against AGMA nominal and ISO, and FE at the geometric
+    HPSTC against the single-pair branch."""
     for k in ("pinion", "gear"):
         # Static FE, uniform load over the face: compare with AGMA without K_o K_v K_s K_H K_B.
         worst = max((f[1] / n - 1 for f, n in zip(fe[k], nominal[k])), key=abs)
@@ -223,6 +241,9 @@ def main():
         c.at_most(f"FE {k}: sigma at {'D' if k == 'pinion' else 'B'} / load share vs single-pair branch extrapolated there, worst",
                   100 * worst, 5.0, "explains sigma at the geometric HPSTC (its load share); 5 %: the other pair's load (README)", " %")
 
+
+def check_linearity(c, fin, fe, fe_pt):
+    """Section 4: linearity of FE and thesis FEM in the torque. Returns the summary lines."""
     # Linearity: a frictionless elastic pair at a fixed position scales with the torque up to the
     # Hertzian patch growth; the loaded HPSTC itself moves with the torque (the next pair
     # touches earlier under a larger deflection), which the peak values carry.
@@ -264,10 +285,12 @@ def main():
                  "the low-torque excess is a load-independent offset (README)", " MPa")
         c.at_most(f"thesis FEM {k} = a + b x FE: rms residual", rms, 3.0,
                   "the tables' own scatter about a line (README)", " MPa")
-    md += ["## Linearity in the torque: sigma(T)/T against sigma(500)/500 - 1 [%]", "",
-           "| member | T1 [N m] | FE loaded HPSTC | FE at the geometric HPSTC | thesis FEM |", "|---|---|---|---|---|"] + lin_rows + [""]
+    return ["## Linearity in the torque: sigma(T)/T against sigma(500)/500 - 1 [%]", "",
+            "| member | T1 [N m] | FE loaded HPSTC | FE at the geometric HPSTC | thesis FEM |", "|---|---|---|---|---|"] + lin_rows + [""]
 
-    # ---- 5. the h_contact sensitivity of validation/speed_vs_error -------------------------
+
+def check_near_a(c, out, pr):
+    """Section 5: the h_contact sensitivity of validation/speed_vs_error. Returns the summary lines."""
     # The contact at A lies r_A - r_Ff above the pinion's form circle, where the fillet meets
     # the involute. With h_contact above that gap one element spans the contact patch and the
     # fillet end, and the entering tooth's peak fillet stress jumps to the fillet end (r_Ff).
@@ -277,10 +300,10 @@ def main():
         rows = read_csv(os.path.join(out, name, "pairs.csv"))
         near[name] = [(r["roll angle"], r["root stress pinion"], r["root radius pinion"], r["load share"])
                       for r in rows if int(r["pinion tooth"]) == 0]
-    md += ["## The first positions after A (entering pinion tooth), h_fillet 0.25 mm", "",
-           f"r_A - r_Ff = {rA - rF:.3f} mm (start of active profile {rA:.3f} mm, form radius {rF:.3f} mm).", "",
-           "| roll [deg] | load share | h_contact 0.4: sigma [MPa] (radius [mm]) | h_contact 0.05: sigma [MPa] (radius [mm]) |",
-           "|---|---|---|---|"]
+    md = ["## The first positions after A (entering pinion tooth), h_fillet 0.25 mm", "",
+          f"r_A - r_Ff = {rA - rF:.3f} mm (start of active profile {rA:.3f} mm, form radius {rF:.3f} mm).", "",
+          "| roll [deg] | load share | h_contact 0.4: sigma [MPa] (radius [mm]) | h_contact 0.05: sigma [MPa] (radius [mm]) |",
+          "|---|---|---|---|"]
     for a_, b_ in zip(near["nearA_hc0.4"], near["nearA_hc0.05"]):
         md.append(f"| {a_[0]:.3f} | {b_[3]:.3f} | {a_[1]:.2f} ({a_[2]:.3f}) | {b_[1]:.2f} ({b_[2]:.3f}) |")
     md.append("")
@@ -294,7 +317,11 @@ def main():
                "converged: the peak is in the fillet, away from the contact", " mm")
     c.at_most("r_A - r_Ff (contact at A above the form circle)", rA - rF, 0.4,
               "below h_contact 0.4 mm: one element spans both", " mm")
+    return md
 
+
+def write_summary(out, md):
+    """Appends the wall time of run.sh, writes results/summary.md and prints it."""
     # Cost of the run (reported).
     wt = os.path.join(out, "wall_time.txt")
     if os.path.exists(wt):
@@ -302,6 +329,39 @@ def main():
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--out", required=True)
+    out = ap.parse_args().out
+    c = Checks("seed001_root_stress", out)
+    md = []
+
+    # ---- 1. positions: B and D against AGMA 908 closed forms ------------------------------
+    pr, roll_d, roll_b = check_positions(c, out)
+
+    # ---- 2. AGMA: gearfem rate against the thesis' AGMA tables ---------------------------
+    ag = check_agma(c, out)
+
+    # ---- 3. FE: mesh ladder ---------------------------------------------------------------
+    curves = ladder_curves(out)
+    ladder_md, err = check_mesh_ladder(c, curves)
+    md += ladder_md
+
+    # ---- 4. FE at all torques (finest mesh): against AGMA, ISO and the thesis -----------
+    fin = curves[FINAL]
+    fe = {k: [loaded_hpstc(fin[T][k], k) for T in TORQUES] for k in ("pinion", "gear")}
+    fe_pt = {k: [at_point(fin[T][k], k) for T in TORQUES] for k in ("pinion", "gear")}
+    check_hpstc_positions(c, fin, fe_pt, roll_d, roll_b)
+    md += hpstc_table(fe, fe_pt, err, ag)
+    check_against_standards(c, fin, fe, fe_pt, ag["nominal"], ag["iso"])
+    md += check_linearity(c, fin, fe, fe_pt)
+
+    # ---- 5. the h_contact sensitivity of validation/speed_vs_error -------------------------
+    md += check_near_a(c, out, pr)
+
+    write_summary(out, md)
     sys.exit(c.finish())
 
 
