@@ -32,14 +32,18 @@ TOL_EQUILIBRIUM = 5e-3    # ccx: contact moment about O1 against the support rea
 TOL_GEOMETRY = 1e-4       # recomputed a and eps_alpha against gearfem's log (its 6 digits)
 
 
-def main():
+def parse_args():
+    """The command line: --out, --table, --plot."""
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True, help="results folder of run_peer.py")
     ap.add_argument("--table", required=True, help="table.md to write (tracked, no timings)")
     ap.add_argument("--plot", required=True, help="comparison.png to write")
-    a = ap.parse_args()
-    out = a.out
-    c = Checks(CASE, out)
+    return ap.parse_args()
+
+
+def load(out):
+    """The geometry and the CSV files of run_peer.py in `out`, with the positions, torques and kappas
+    they contain and the gearfem (G) and ccx (C) rows by key."""
     geo = json.load(open(f"{out}/geometry.json"))
     gs = read_csv(f"{out}/gearfem/sweep.csv")
     gp = read_csv(f"{out}/gearfem/pairs.csv")
@@ -57,8 +61,12 @@ def main():
     kappas = sorted({r["kappa"] for r in cs}, reverse=True)
     kref = kappas[0]
     C = {(r["kappa"], r["torque_gearfem"], int(r["position"])): r for r in cs}
+    return dict(geo=geo, gp=gp, cp=cp, tm=tm, gaps=gaps, rb1=rb1, R=R, torques=torques, positions=positions,
+                roll=roll, point=point, G=G, kappas=kappas, kref=kref, C=C)
 
-    # ---- the pair: the geometry recomputed in Python against gearfem's own figures
+
+def check_geometry(c, out, geo, R, positions, roll, point):
+    """The pair: the geometry recomputed in Python against gearfem's own figures."""
     log = open(f"{out}/gearfem_solve.log").read()
     m = re.search(r"a ([0-9.]+) mm, contact ratio ([0-9.]+)", log)
     if m:
@@ -75,7 +83,10 @@ def main():
         c.abs(f"gearfem flags the position at Python's {name} as {name}", flagged.get(code, float("nan")), R[name],
               1e-5, "sweep.csv point column", " deg")
 
-    # unloaded gaps: the tooth-0 pair while it is on the path A..E (calculix_peer's placement check)
+
+def check_gaps(c, gaps, R):
+    """Unloaded gaps: the tooth-0 pair while it is on the path A..E (calculix_peer's placement check),
+    any pair on the path, and the neighbouring pairs off it."""
     on0 = [g for g in gaps if int(g["pinion_tooth"]) == 0 and R["A"] <= g["path_roll_deg"] <= R["E"]]
     w0 = max(on0, key=lambda g: g["unloaded_gap_um"])
     c.at_most(f"unloaded gap of the tooth 0 pair, every position (worst at {w0['roll_deg']:+.3f} deg)",
@@ -91,7 +102,9 @@ def main():
                ", ".join(f"{g['unloaded_gap_um']:.2f}" for g in sorted(nb, key=lambda g: g["roll_deg"])) + " um",
                "—", "README: conformal mesh")
 
-    # ---- coverage
+
+def check_coverage(c, R, torques, positions, roll, kref, C):
+    """Coverage: positions and torques compared, transitions B and D and the ends A and E reached."""
     rolls = [roll[p] for p in positions]
     n_ccx = sum(1 for p in positions if all((kref, t, p) in C for t in torques))
     c.at_least(f"positions compared (gearfem and ccx kappa {kref:g}, both torques)", n_ccx, 8,
@@ -103,7 +116,11 @@ def main():
            f"{min(rolls):+.3f}..{max(rolls):+.3f} deg", "A %+.3f, B %+.3f, D %+.3f, E %+.3f deg"
            % (R["A"], R["B"], R["D"], R["E"]), "peer-comparison requirement")
 
-    # ---- ccx at gearfem's torques
+
+def make_ccx_at(C, torques, G, rb1):
+    """ccx_at(kappa, t, p): ccx's row at gearfem's torque t and position p, with its load exponent n,
+    STE at t (by n and via gearfem's k_tangent) and root stresses scaled by T1/T1_ccx; None if ccx
+    has no such row."""
     def ccx_at(kappa, t, p):
         r = C.get((kappa, t, p))
         if r is None:
@@ -116,18 +133,26 @@ def main():
         ste_kt = g["STE"] + (t - r["T1_reaction"]) / (rb1 * 1e-3) / g["k_tangent"] * 1e6  # um
         return dict(r, n=n, ste=th * 1e-6 * rb1 * 1e3, ste_kt=ste_kt, scale=scale,
                     root_p=r["root_pinion"] * scale, root_g=r["root_gear"] * scale)
+    return ccx_at
 
-    def shares(rows, tkey, t, p, kappa=None):
-        d = {}
-        for r in rows:
-            if int(r["position"]) != p or r[tkey] != t or (kappa is not None and r["kappa"] != kappa):
-                continue
-            if kappa is None:
-                d[(int(r["pinion tooth"]), int(r["gear tooth"]))] = r["load share"]
-            else:
-                d[(int(r["pinion_tooth"]), int(r["gear_tooth"]))] = r["share"]
-        return d
 
+def shares(rows, tkey, t, p, kappa=None):
+    """Load shares by (pinion tooth, gear tooth) at torque t and position p: gearfem's pairs.csv rows
+    when kappa is None, otherwise ccx's rows of that kappa."""
+    d = {}
+    for r in rows:
+        if int(r["position"]) != p or r[tkey] != t or (kappa is not None and r["kappa"] != kappa):
+            continue
+        if kappa is None:
+            d[(int(r["pinion tooth"]), int(r["gear tooth"]))] = r["load share"]
+        else:
+            d[(int(r["pinion_tooth"]), int(r["gear_tooth"]))] = r["share"]
+    return d
+
+
+def comparison_table(geo, torques, positions, roll, point, G, gp, cp, kref, ccx_at):
+    """The lines of table.md (one table per torque) and, per quantity, the worst difference as
+    (value, torque, roll angle)."""
     label = {0: "", 1: "A", 2: "B", 3: "C", 4: "D", 5: "E"}
     lines = ["# gearfem against CalculiX: planet z 28 in ring z 74 (seed 001 stage 1), plane stress",
              "",
@@ -173,7 +198,12 @@ def main():
                          f"{fmt(sc)} | {g['root stress gear']:.1f} / {x['root_g']:.1f} | {drg * 100:+.2f} | "
                          f"{g['root stress pinion']:.1f} / {x['root_p']:.1f} | {drp * 100:+.2f} |")
         lines.append("")
+    return lines, worst
 
+
+def check_worst(c, worst):
+    """The worst differences over all positions and torques: STE and ring root stress against their
+    limits, ccx's equilibrium, and the rest reported."""
     def w(key):
         v, t, r = worst[key]
         return v, f"worst: {t:g} N m, {r:+.3f} deg"
@@ -197,7 +227,9 @@ def main():
     c.info(f"ccx ring moment T2 z1/(T1 z2) - 1 ({where})", f"{v * 100:+.2f} %", "—",
            "frictionless: T2/T1 = r_b2/r_b1 when one line of action carries the load")
 
-    # ---- penalty sensitivity (when a second kappa ran)
+
+def check_penalty(c, kappas, torques, positions, roll, ccx_at):
+    """Penalty sensitivity: ccx's STE of the last kappa against the first (when a second kappa ran)."""
     if len(kappas) > 1:
         pen = []
         for t in torques:
@@ -210,7 +242,10 @@ def main():
             c.info(f"ccx STE kappa {kappas[-1]:g} / kappa {kappas[0]:g} - 1 (worst: {v[1]:g} N m, {v[2]:+.3f} deg)",
                    f"{v[0] * 100:+.2f} %", "—", "penalty sensitivity")
 
-    # ---- timing: one run, same machine
+
+def timing_report(c, out, tm, torques, positions, kappas):
+    """Timing, one run on the same machine: the time ratios as checks, then results/timing.md written
+    and printed."""
     g_row = [r for r in tm if int(r["position"]) == -1][0]
     npos = len(positions)
     timing = ["| program | runs | positions x torques | wall [s] | CPU [s] | wall per position [s] | CPU per position [s] |",
@@ -236,8 +271,26 @@ def main():
         f.write(text)
     os.replace(f"{out}/timing.md.tmp", f"{out}/timing.md")
     print(text)
+
+
+def main():
+    """Runs the checks, writes timing.md, table.md and the plot, exits with the verdict."""
+    a = parse_args()
+    out = a.out
+    c = Checks(CASE, out)
+    d = load(out)
+    geo, R, torques, positions, roll = d["geo"], d["R"], d["torques"], d["positions"], d["roll"]
+    kappas, kref, G = d["kappas"], d["kref"], d["G"]
+    check_geometry(c, out, geo, R, positions, roll, d["point"])
+    check_gaps(c, d["gaps"], R)
+    check_coverage(c, R, torques, positions, roll, kref, d["C"])
+    ccx_at = make_ccx_at(d["C"], torques, G, d["rb1"])
+    lines, worst = comparison_table(geo, torques, positions, roll, d["point"], G, d["gp"], d["cp"], kref, ccx_at)
+    check_worst(c, worst)
+    check_penalty(c, kappas, torques, positions, roll, ccx_at)
+    timing_report(c, out, d["tm"], torques, positions, kappas)
     write_if_changed(a.table, "\n".join(lines) + "\n")
-    plot(a.plot, torques, positions, roll, G, gp, cp, kref, ccx_at, shares, R)
+    plot(a.plot, torques, positions, roll, G, d["gp"], d["cp"], kref, ccx_at, shares, R)
     sys.exit(c.finish())
 
 
