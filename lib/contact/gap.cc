@@ -73,26 +73,45 @@ namespace gearfem::contact
     const geometry::Placement PM = placed(scene, M, q);
     const Vec2 y                 = to_body(PM, xs);
     const auto hint = hint_key >= 0 ? hints_.find(hint_key) : hints_.end();
-    out.pr = hint != hints_.end() ? ms.project_from(y, options_.search_distance, use, hint->second) :
-                                    ms.project(y, options_.search_distance, use);
-    if (out.pr.piece < 0)
+    // Closest point on the displaced master: project y - u_m(t), fixed point. It starts
+    // from the hint, the last search's answer for this point, where there is one (one
+    // projection fewer: the undisplaced y is only a start), else from the projection of y.
+    const bool from_hint = hint != hints_.end() && hint->second.piece >= 0 && !hint->second.corner;
+    const auto start_from_y = [&]() {
+      out.pr = hint != hints_.end() ? ms.project_from(y, options_.search_distance, use, hint->second) :
+                                      ms.project(y, options_.search_distance, use);
+      if (out.pr.piece >= 0)
+        out.face = ms.face_at(out.pr.piece, out.pr.t, out.shape);
+      return out.pr.piece >= 0;
+    };
+    if (from_hint)
+      out.pr = hint->second, out.face = ms.face_at(out.pr.piece, out.pr.t, out.shape);
+    else if (!start_from_y())
       return false;
-    // Closest point on the displaced master: project y - u_m(t), fixed point.
+    thread_local std::vector<double> next_shape;
     for (int k = 0; k < 3; ++k)
       {
-        out.face        = ms.face_at(out.pr.piece, out.pr.t, out.shape);
         const Vec2 um   = interpolate(M, out.face, out.shape);
-        const auto next = ms.project_from(y - um, options_.search_distance, use, out.pr);
+        const auto next = ms.project_from(y - um, options_.search_distance, use, out.pr, &next_shape);
         if (next.piece < 0)
-          break;
+          {
+            // Out of reach from the hint: start again from y, as without one.
+            if (k == 0 && from_hint)
+              {
+                hints_.erase(hint);
+                return project_point(scene, M, xs, q, out, slave_offset, hint_key);
+              }
+            break;
+          }
         const bool same = next.piece == out.pr.piece && std::abs(next.t - out.pr.t) < 1e-12;
         out.pr          = next;
+        out.face        = next.face;
+        out.shape.swap(next_shape);
         if (same)
           break;
       }
     if (hint_key >= 0)
       hints_[hint_key] = out.pr;
-    out.face      = ms.face_at(out.pr.piece, out.pr.t, out.shape);
     for (const int n : ms.faces()[out.face].nodes)
       if (!cache_[M - 1].node_zone[n])
         zone_breach_ = true;

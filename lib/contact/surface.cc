@@ -272,23 +272,33 @@ namespace gearfem::contact
   }
 
   Projection ContactSurface::project_from(const Vec2 &q, double max_distance, const std::vector<bool> &use_piece,
-                                          const Projection &hint) const
+                                          const Projection &hint, std::vector<double> *shape) const
   {
+    const auto full = [&]() {
+      Projection p = project(q, max_distance, use_piece);
+      if (shape && p.piece >= 0)
+        face_at(p.piece, p.t, *shape);
+      return p;
+    };
     if (hint.piece < 0 || hint.corner)
-      return project(q, max_distance, use_piece);
+      return full();
     const auto &pc  = body_->mesh().pieces[hint.piece];
     const double lo = std::min(pc.t0, pc.t1), hi = std::max(pc.t0, pc.t1);
     bool ok         = false;
-    const double t  = pc.curve.closest_parameter_from(q, lo, hi, hint.t, ok);
+    Vec2 x, tau;
+    const double t  = pc.curve.closest_parameter_from(q, lo, hi, hint.t, ok, x, tau);
     if (!ok)
-      return project(q, max_distance, use_piece);
+      return full();
     Projection p;
-    p.piece = hint.piece, p.t = t, p.point = pc.curve.point(t);
+    p.piece = hint.piece, p.t = t, p.point = x;
     if ((q - p.point).norm() > max_distance)
       return Projection();
-    std::vector<double> shape;
-    p.face            = face_at(p.piece, p.t, shape);
-    p.normal          = outward_normal(p.piece, p.t);
+    thread_local std::vector<double> own;
+    p.face = face_at(p.piece, p.t, shape ? *shape : own);
+    if (pc.t1 < pc.t0)
+      tau = -tau;
+    tau.normalize();
+    p.normal          = Vec2(tau.y(), -tau.x()); // as outward_normal, from Newton's tangent
     p.signed_distance = (q - p.point).dot(p.normal);
     return p;
   }

@@ -77,8 +77,9 @@ namespace gearfem::contact
     /// The same near a previous projection `hint` (piece and parameter) of a nearby point:
     /// Newton on the hint's piece only, when the closest point is interior to that piece
     /// and within the hint's bracket; otherwise (a piece end, a jump) the full project().
+    /// `shape`, when given, receives the shape values of face_at at the projection.
     Projection project_from(const Vec2 &q, double max_distance, const std::vector<bool> &use_piece,
-                            const Projection &hint) const;
+                            const Projection &hint, std::vector<double> *shape = nullptr) const;
     /// A lower bound on the distance from q (body frame) to the surface; only pieces within
     /// `reach` of q are looked at (a value above `reach` when there are none) [m].
     double distance_lower_bound(const Vec2 &q, double reach) const;

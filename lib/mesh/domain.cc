@@ -47,30 +47,48 @@ namespace gearfem::mesh
   namespace
   {
     /// Safeguarded Newton on f(t) = (p(t) - q) . p'(t) = 0 from t in the bracket [a, b].
-    double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b)
+    /// `x` and `x1` return the point and the tangent at the result; `newton` whether the
+    /// last step was a Newton step that met the tolerance (false when it was a bisection:
+    /// the bracket was not verified and the iteration may have run into one of its ends).
+    double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b,
+                          Vec2 &x, Vec2 &x1, bool &newton)
     {
-      Vec2 x, p1, p2;
+      Vec2 p2;
+      newton = false;
       for (int it = 0; it < 50; ++it)
         {
-          c.evaluate(t, x, p1, p2);
+          c.evaluate(t, x, x1, p2);
           const Vec2 r   = x - q;
-          const double f = r.dot(p1), df = p1.squaredNorm() + r.dot(p2);
+          const double f = r.dot(x1), df = x1.squaredNorm() + r.dot(p2);
           // Keep a bracket [a, b] for safeguarding (f is increasing through the minimum).
           if (f > 0)
             b = t;
           else
             a = t;
           double tn = (df > 0) ? t - f / df : 0.5 * (a + b);
+          bool step = df > 0;
           if (!(tn > a && tn < b))
-            tn = 0.5 * (a + b);
+            tn = 0.5 * (a + b), step = false;
           if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t)) + 1e-16 * (hi - lo))
             {
-              t = tn;
+              // The last step is below round-off of t: first order carries x and x1 to it.
+              x += (tn - t) * x1, x1 += (tn - t) * p2;
+              t      = tn;
+              newton = step;
               break;
             }
           t = tn;
         }
-      return std::clamp(t, lo, hi);
+      const double tc = std::clamp(t, lo, hi);
+      if (tc != t)
+        c.evaluate(tc, x, x1, p2);
+      return tc;
+    }
+    double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b)
+    {
+      Vec2 x, x1;
+      bool newton = false;
+      return newton_closest(c, q, lo, hi, t, a, b, x, x1, newton);
     }
   } // namespace
 
@@ -108,20 +126,37 @@ namespace gearfem::mesh
 
   double ParametricCurve::closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok) const
   {
+    Vec2 x, x1;
+    return closest_parameter_from(q, lo, hi, t0, ok, x, x1);
+  }
+
+  double ParametricCurve::closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok, Vec2 &x,
+                                                 Vec2 &x1) const
+  {
     if (lo > hi)
       std::swap(lo, hi);
     const double dt = (hi - lo) / closest_samples;
     const double a = std::max(lo, t0 - dt), b = std::min(hi, t0 + dt);
-    const auto f = [&](double t) {
-      Vec2 x, p1, p2;
-      evaluate(t, x, p1, p2);
-      return (x - q).dot(p1);
-    };
-    // The minimum must lie strictly inside the bracket: f < 0 at a, f > 0 at b.
-    ok = a > lo && b < hi && f(a) < 0 && f(b) > 0;
+    ok = a > lo && b < hi;
     if (!ok)
       return t0;
-    return newton_closest(*this, q, lo, hi, std::clamp(t0, a, b), a, b);
+    // Newton first: converged by a Newton step strictly inside (a, b), it has found a root
+    // of f with f' > 0, the minimum the bracket check below would admit (f has one root in
+    // a bracket of a 32nd of a piece). Two evaluations fewer than checking first.
+    bool newton   = false;
+    const double t = newton_closest(*this, q, lo, hi, std::clamp(t0, a, b), a, b, x, x1, newton);
+    if (newton && t > a && t < b)
+      return t;
+    const auto f = [&](double s) {
+      Vec2 p, p1, p2;
+      evaluate(s, p, p1, p2);
+      return (p - q).dot(p1);
+    };
+    // The minimum must lie strictly inside the bracket: f < 0 at a, f > 0 at b.
+    ok = f(a) < 0 && f(b) > 0;
+    if (!ok)
+      return t0;
+    return newton_closest(*this, q, lo, hi, std::clamp(t0, a, b), a, b, x, x1, newton);
   }
 
   ParametricCurve ParametricCurve::from(const geometry::CurvePtr &curve, double angle)

@@ -73,9 +73,13 @@ namespace gearfem::mesh
     /// The number of intervals of the sampled start of closest_parameter.
     static constexpr int closest_samples = 32;
     /// The same from a start t0 near the answer (a previous projection): safeguarded Newton
-    /// in the bracket t0 -/+ (hi - lo)/32, without the sampling. `ok` false (and the result
+    /// in the bracket t0 -/+ (hi - lo)/32, without the sampling (the bracket's ends are
+    /// evaluated only where Newton does not converge inside it). `ok` false (and the result
     /// meaningless) when the bracket does not hold the minimum: call closest_parameter.
     double closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok) const;
+    /// The same, with the point x and the tangent x1 at the result (when ok).
+    double closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok, Vec2 &x,
+                                  Vec2 &x1) const;
     /// A Curve rotated by `angle` [rad] about the origin (curve may be null-free only).
     static ParametricCurve from(const geometry::CurvePtr &curve, double angle = 0.0);
     /// Circle of radius r about c: c + r (cos t, sin t).
