@@ -158,3 +158,42 @@ TEST(MeshDomain, UntangleInvertedCells)
       EXPECT_EQ(m.vertices[k], before[k]) << "boundary vertex " << k << " moved";
   EXPECT_LT((m.vertices[id(1, 1)] - mesh::Vec2(1, 1)).norm(), 0.05);
 }
+
+// Reference (closed form): the point of a circle of radius r about c closest to q is
+// c + r (q - c)/|q - c|, at the parameter atan2 of q - c. The contact search projects from a
+// previous answer (closest_parameter_from): Newton first, the bracket t0 -/+ (hi - lo)/32
+// checked only where Newton does not converge inside it.
+TEST(MeshDomain, ClosestParameterFromAHint)
+{
+  const mesh::Vec2 c(0.01, -0.02);
+  const double r  = 0.05;
+  const auto circ = mesh::ParametricCurve::circle(c, r);
+  const double lo = 0.2, hi = 2.8, dt = (hi - lo) / mesh::ParametricCurve::closest_samples;
+  for (const double angle : {0.9, 1.4, 2.1})
+    for (const double off : {0.0, 1e-3, -3e-3}) // inside, outside the circle
+      {
+        const mesh::Vec2 q = c + (r + off) * mesh::Vec2(std::cos(angle), std::sin(angle));
+        bool ok            = false;
+        mesh::Vec2 x, x1;
+        const double t = circ.closest_parameter_from(q, lo, hi, angle + 0.4 * dt, ok, x, x1);
+        ASSERT_TRUE(ok) << angle;
+        EXPECT_NEAR(t, angle, 1e-13);
+        EXPECT_NEAR(t, circ.closest_parameter(q, lo, hi), 1e-13); // the sampled search
+        // The point and tangent Newton ended on are the curve's at t.
+        EXPECT_LT((x - circ.point(t)).norm(), 1e-15);
+        EXPECT_LT((x1 - circ.d1(t)).norm(), 1e-15);
+        // The short form gives the same parameter.
+        bool ok2 = false;
+        EXPECT_EQ(circ.closest_parameter_from(q, lo, hi, angle + 0.4 * dt, ok2), t);
+        EXPECT_TRUE(ok2);
+      }
+  // The minimum outside the hint's bracket, and a bracket reaching a piece end: not ok (the
+  // caller then searches the whole surface).
+  const mesh::Vec2 q = c + r * mesh::Vec2(std::cos(1.4), std::sin(1.4));
+  bool ok            = true;
+  circ.closest_parameter_from(q, lo, hi, 1.4 + 3 * dt, ok);
+  EXPECT_FALSE(ok);
+  ok = true;
+  circ.closest_parameter_from(c + r * mesh::Vec2(std::cos(0.21), std::sin(0.21)), lo, hi, 0.21, ok);
+  EXPECT_FALSE(ok);
+}
