@@ -22,7 +22,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
-from vcheck import Checks, read_csv, write_if_changed  # noqa: E402
+from vcheck import Checks, load_shares, read_csv, write_if_changed  # noqa: E402
 
 CASE = "calculix_internal"
 TOL_STE = 0.01            # |STE ccx / gearfem - 1|, every position and torque
@@ -136,20 +136,6 @@ def make_ccx_at(C, torques, G, rb1):
     return ccx_at
 
 
-def shares(rows, tkey, t, p, kappa=None):
-    """Load shares by (pinion tooth, gear tooth) at torque t and position p: gearfem's pairs.csv rows
-    when kappa is None, otherwise ccx's rows of that kappa."""
-    d = {}
-    for r in rows:
-        if int(r["position"]) != p or r[tkey] != t or (kappa is not None and r["kappa"] != kappa):
-            continue
-        if kappa is None:
-            d[(int(r["pinion tooth"]), int(r["gear tooth"]))] = r["load share"]
-        else:
-            d[(int(r["pinion_tooth"]), int(r["gear_tooth"]))] = r["share"]
-    return d
-
-
 def comparison_table(geo, torques, positions, roll, point, G, gp, cp, kref, ccx_at):
     """The lines of table.md (one table per torque) and, per quantity, the worst difference as
     (value, torque, roll angle)."""
@@ -182,7 +168,7 @@ def comparison_table(geo, torques, positions, roll, point, G, gp, cp, kref, ccx_
             dste, dkt = x["ste"] / g["STE"] - 1, x["ste_kt"] / g["STE"] - 1
             drg = x["root_g"] / g["root stress gear"] - 1
             drp = x["root_p"] / g["root stress pinion"] - 1
-            sg, sc = shares(gp, "torque", t, p), shares(cp, "torque_gearfem", t, p, kref)
+            sg, sc = load_shares(gp, "torque", t, p), load_shares(cp, "torque_gearfem", t, p, kref)
             fmt = lambda d: ", ".join(f"{(i if i <= 14 else i - 28):d}/{(j if j <= 37 else j - 74):d} = {v:.3f}"
                                       for (i, j), v in sorted(d.items()) if v > 1e-3) or "-"
             ds = max([abs(sc.get(k, 0) - sg.get(k, 0)) for k in set(sg) | set(sc)] or [0])
@@ -290,11 +276,11 @@ def main():
     check_penalty(c, kappas, torques, positions, roll, ccx_at)
     timing_report(c, out, d["tm"], torques, positions, kappas)
     write_if_changed(a.table, "\n".join(lines) + "\n")
-    plot(a.plot, torques, positions, roll, G, d["gp"], d["cp"], kref, ccx_at, shares, R)
+    plot(a.plot, torques, positions, roll, G, d["gp"], d["cp"], kref, ccx_at, R)
     sys.exit(c.finish())
 
 
-def plot(path, torques, positions, roll, G, gp, cp, kref, ccx_at, shares, R):
+def plot(path, torques, positions, roll, G, gp, cp, kref, ccx_at, R):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -310,9 +296,9 @@ def plot(path, torques, positions, roll, G, gp, cp, kref, ccx_at, shares, R):
                       label=f"STE {t:g} N m")
         ax[0, 1].plot(r, [(q["root_g"] / G[(t, p)]["root stress gear"] - 1) * 100 for q, p in zip(x, ps)], "s--",
                       mfc="none", color=cols[i], label=f"ring root stress {t:g} N m")
-        ax[1, 0].plot(r, [shares(gp, "torque", t, p).get((0, 0), 0) for p in ps], "-", color=cols[i],
+        ax[1, 0].plot(r, [load_shares(gp, "torque", t, p).get((0, 0), 0) for p in ps], "-", color=cols[i],
                       label=f"gearfem {t:g} N m")
-        ax[1, 0].plot(r, [shares(cp, "torque_gearfem", t, p, kref).get((0, 0), 0) for p in ps], "o", mfc="none",
+        ax[1, 0].plot(r, [load_shares(cp, "torque_gearfem", t, p, kref).get((0, 0), 0) for p in ps], "o", mfc="none",
                       color=cols[i], label="ccx")
         ax[1, 1].plot(r, [G[(t, p)]["root stress gear"] for p in ps], "-", color=cols[i], label=f"gearfem ring {t:g} N m")
         ax[1, 1].plot(r, [q["root_g"] for q in x], "s", mfc="none", color=cols[i], label="ccx ring")

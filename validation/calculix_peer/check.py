@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-from vcheck import Checks, read_csv, write_if_changed
+from vcheck import Checks, load_shares, read_csv, write_if_changed
 
 RB1 = 33.8289343483  # pinion base radius [mm] (gearfem profile inputs/fzg_c.prm)
 B_ROLL, D_ROLL = -5.9828, 6.1126  # transitions on the pinion roll angle [deg] (same output)
@@ -106,20 +106,6 @@ def make_ccx_at(C, torques):
     return ccx_at
 
 
-def share_map(rows, tkey, p_t, kappa=None):
-    """Load share per (pinion tooth, gear tooth) at (torque, position) p_t; gearfem rows if kappa
-    is None, else ccx rows of that penalty factor."""
-    out = {}
-    for r in rows:
-        if (kappa is not None and r["kappa"] != kappa) or int(r["position"]) != p_t[1] or r[tkey] != p_t[0]:
-            continue
-        if kappa is None:
-            out[(int(r["pinion tooth"]), int(r["gear tooth"]))] = r["load share"]
-        else:
-            out[(int(r["pinion_tooth"]), int(r["gear_tooth"]))] = r["share"]
-    return out
-
-
 def comparison_tables(torques, positions, roll, G, F, gp, cp, kref, ccx_at):
     """Header and one comparison table per torque; returns the table lines and the worst
     differences per (quantity, away/transition) with their torque and roll angle."""
@@ -144,7 +130,7 @@ def comparison_tables(torques, positions, roll, G, F, gp, cp, kref, ccx_at):
             trans = min(abs(roll[p] - B_ROLL), abs(roll[p] - D_ROLL)) < 0.5
             d_ste = x["ste"] / g["STE"] - 1
             d_k = x["k_ratio_rot"] - 1
-            sg, sc = share_map(gp, "torque", (t, p)), share_map(cp, "torque_gearfem", (t, p), kref)
+            sg, sc = load_shares(gp, "torque", t, p), load_shares(cp, "torque_gearfem", t, p, kref)
             keys = sorted(k for k in set(sg) | set(sc) if max(sg.get(k, 0), sc.get(k, 0)) > 1e-3)
             dsh = max(abs(sc.get(k, 0) - sg.get(k, 0)) for k in keys)
             d_rp = x["root_p"] / g["root stress pinion"] - 1
@@ -311,11 +297,11 @@ def main():
     penalty_table(c, lines, torques, positions, roll, G, kappas, ccx_at)
     timing_report(c, out, d["tm"], d["gs"], torques, positions, kappas)
     write_if_changed(a.table, "\n".join(lines) + "\n")
-    plot(a.plot, torques, positions, roll, G, d["gp"], d["cp"], C, kappas, ccx_at, share_map)
+    plot(a.plot, torques, positions, roll, G, d["gp"], d["cp"], C, kappas, ccx_at)
     sys.exit(c.finish())
 
 
-def plot(path, torques, positions, roll, G, gp, cp, C, kappas, ccx_at, share_map):
+def plot(path, torques, positions, roll, G, gp, cp, C, kappas, ccx_at):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -333,8 +319,8 @@ def plot(path, torques, positions, roll, G, gp, cp, C, kappas, ccx_at, share_map
         ax[0, 1].plot(r, [G[(t, p)]["k_secant per width"] for p in ps], "-", color=cols[i], label=f"gearfem {t:g} N m")
         ax[0, 1].plot(r, [t / (RB1 * 1e-3) / (ccx_at(kappas[0], t, p)["ste"]) / 14 for p in ps], "o", mfc="none",
                       color=cols[i], label="ccx")
-        sg = [share_map(gp, "torque", (t, p)).get((0, 0), 0) for p in ps]
-        sc = [share_map(cp, "torque_gearfem", (t, p), kappas[0]).get((0, 0), 0) for p in ps]
+        sg = [load_shares(gp, "torque", t, p).get((0, 0), 0) for p in ps]
+        sc = [load_shares(cp, "torque_gearfem", t, p, kappas[0]).get((0, 0), 0) for p in ps]
         ax[1, 0].plot(r, sg, "-", color=cols[i], label=f"gearfem {t:g} N m")
         ax[1, 0].plot(r, sc, "o", mfc="none", color=cols[i], label="ccx")
         ax[1, 1].plot(r, [G[(t, p)]["root stress pinion"] for p in ps], "-", color=cols[i], label=f"gearfem pinion {t:g} N m")

@@ -187,3 +187,17 @@ def write_if_changed(path, text):
         f.write(text)
     os.replace(tmp, path)
     return True
+
+
+def load_shares(rows, tkey, torque, position, kappa=None):
+    """Load share per (pinion tooth, gear tooth) at one torque (column `tkey`) and position:
+    gearfem's pairs.csv rows when kappa is None, else the CalculiX rows of that penalty factor."""
+    out = {}
+    for r in rows:
+        if int(r["position"]) != position or r[tkey] != torque or (kappa is not None and r["kappa"] != kappa):
+            continue
+        if kappa is None:
+            out[(int(r["pinion tooth"]), int(r["gear tooth"]))] = r["load share"]
+        else:
+            out[(int(r["pinion_tooth"]), int(r["gear_tooth"]))] = r["share"]
+    return out
