@@ -4,6 +4,7 @@
 #include "base/errors.h"
 #include "base/number.h"
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -57,21 +58,32 @@ namespace gearfem
 
   void Table::write_csv(const std::filesystem::path &file, int significant) const
   {
-    AtomicOutputFile f(file);
     const auto h = headers();
+    for (const auto &r : rows_)
+      for (std::size_t c = 0; c < r.size(); ++c)
+        if (!std::isfinite(r[c]))
+          require_finite_output(r[c], file.string(), "column '" + h[c] + "'");
+    AtomicOutputFile f(file);
+    std::string text;
     for (std::size_t c = 0; c < h.size(); ++c)
-      f << (c ? "," : "") << h[c];
-    f << "\n";
-    f.stream() << std::setprecision(significant);
+      text += (c ? "," : "") + h[c];
+    text += '\n';
+    // std::to_chars in the general format with `significant` digits writes what printf's
+    // %.<significant>g and an ostream with setprecision(significant) write (test_table.cc), at
+    // a tenth of the ostream's cost: a condensed cycle's outputs took half of its sweep.
+    char cell[64];
     for (const auto &r : rows_)
       {
         for (std::size_t c = 0; c < r.size(); ++c)
           {
-            require_finite_output(r[c], file.string(), "column '" + h[c] + "'");
-            f << (c ? "," : "") << r[c];
+            if (c)
+              text += ',';
+            const auto res = std::to_chars(cell, cell + sizeof(cell), r[c], std::chars_format::general, significant);
+            text.append(cell, res.ptr);
           }
-        f << "\n";
+        text += '\n';
       }
+    f.stream().write(text.data(), std::streamsize(text.size()));
     f.commit();
   }
 

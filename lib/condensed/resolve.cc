@@ -82,25 +82,25 @@ namespace gearfem::condensed
       {
         if (fs.tooth != tooth)
           continue;
+        // sigma = sum over the forces of their stress column times the force: column by column
+        // (contiguous in the column-major influence matrix), each entry summed in the order of
+        // the forces as before, so the values are the same to the last bit.
+        const Eigen::Index n_rows = Eigen::Index(3 * fs.size());
+        Eigen::VectorXd sigma = Eigen::VectorXd::Zero(n_rows);
+        for (const auto &[u, v] : f)
+          {
+            const int j = column_[b][u];
+            if (j < 0)
+              throw SolverError("condensed re-solve: a force at universe DoF " + std::to_string(u) + " of body " +
+                                std::to_string(b + 1) + " has no stored stress influence (corrupt cycle?)");
+            const double *col = body.stress.data() + Eigen::Index(j) * body.stress.rows() + fs.first_row;
+            for (Eigen::Index r = 0; r < n_rows; ++r)
+              sigma[r] += col[r] * v;
+          }
         std::vector<double> s1(fs.size());
         for (std::size_t i = 0; i < fs.size(); ++i)
-          {
-            double s[3] = {0, 0, 0};
-            for (int c = 0; c < 3; ++c)
-              {
-                const Eigen::Index row = Eigen::Index(fs.first_row + 3 * i + c);
-                for (const auto &[u, v] : f)
-                  {
-                    const int j = column_[b][u];
-                    if (j < 0)
-                      throw SolverError("condensed re-solve: a force at universe DoF " + std::to_string(u) +
-                                        " of body " + std::to_string(b + 1) +
-                                        " has no stored stress influence (corrupt cycle?)");
-                    s[c] += body.stress(row, j) * v;
-                  }
-              }
-            s1[i] = fem::principal_stresses(s[0], s[1], s[2])[0];
-          }
+          s1[i] = fem::principal_stresses(sigma[Eigen::Index(3 * i)], sigma[Eigen::Index(3 * i + 1)],
+                                          sigma[Eigen::Index(3 * i + 2)])[0];
         const auto pk = fem::fitted_peak(fs.arc, s1, fem::fillet_samples_per_face);
         return {pk.value, std::hypot(fs.x.at(pk.index), fs.y.at(pk.index))};
       }

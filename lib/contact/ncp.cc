@@ -103,7 +103,11 @@ namespace gearfem::contact
             for (int i = 0; i < n; ++i)
               r.lambda[A[i]] = x[i];
           }
-        r.gap = ghat + a * r.q + W * r.lambda;
+        // W lambda over the active columns only: lambda is zero elsewhere (n of m columns; the
+        // full product was a quarter of a condensed re-solve).
+        r.gap = ghat + a * r.q;
+        for (const int k : A)
+          r.gap.noalias() += W.col(k) * r.lambda[k];
         std::vector<char> next(m, 0);
         for (int k = 0; k < m; ++k)
           {

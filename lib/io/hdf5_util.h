@@ -141,7 +141,8 @@ namespace gearfem::io::hdf5
                const std::string &quantity_value = "") const
     {
     for (const double x : data)
-      require_finite_output(x, file_, std::string("dataset '") + name + "'");
+      if (!std::isfinite(x))
+        require_finite_output(x, file_, std::string("dataset '") + name + "'");
     Hid space(ok_id(H5Screate_simple(int(dims.size()), dims.data(), nullptr), name),
               H5Sclose);
     Hid set(ok_id(H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,

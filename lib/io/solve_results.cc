@@ -5,6 +5,8 @@
 #include "base/atomic_file.h"
 #include "io/hdf5_util.h"
 
+#include <cmath>
+
 namespace gearfem::io
 {
   namespace
@@ -119,7 +121,8 @@ namespace gearfem::io
         const auto h = table->headers();
         for (std::size_t i = 0; i < table->n_rows(); ++i)
           for (std::size_t c = 0; c < table->n_columns(); ++c)
-            require_finite_output(table->row(i)[c], file.string(), "dataset '" + name + "/" + h[c] + "'");
+            if (!std::isfinite(table->row(i)[c])) // the message only for a bad value: this loop is hot
+              require_finite_output(table->row(i)[c], file.string(), "dataset '" + name + "/" + h[c] + "'");
       }
     const Writer w(file.string());
     const QuietHdf5 quiet;
@@ -177,7 +180,8 @@ namespace gearfem::io
         const auto h = table->headers();
         for (std::size_t i = 0; i < table->n_rows(); ++i)
           for (std::size_t c = 0; c < table->n_columns(); ++c)
-            require_finite_output(table->row(i)[c], (dir / (name + ".csv")).string(), "column '" + h[c] + "'");
+            if (!std::isfinite(table->row(i)[c]))
+              require_finite_output(table->row(i)[c], (dir / (name + ".csv")).string(), "column '" + h[c] + "'");
       }
     for (const auto &[name, table] : tables)
       table->write_csv(dir / (name + ".csv"));
