@@ -119,8 +119,12 @@ namespace gearfem::contact
       lambda_b[k] = c.cand[k].point.force;
     const double dq = q - c.q_build;
     const Eigen::VectorXd dqs = Eigen::VectorXd::Constant(m, dq) + adv;
-    const Eigen::VectorXd approach =
-      -(c.a.cwiseProduct(dqs) + 0.5 * c.curvature.cwiseProduct(dqs.cwiseProduct(dqs)) + c.W * (ncp.lambda - lambda_b));
+    const Eigen::VectorXd dlambda = ncp.lambda - lambda_b;
+    // Only the edge candidates' approach is checked: their rows of W, not the whole product
+    // (which had become the largest single cost of a re-solve).
+    const auto approach = [&](int k) {
+      return -(c.a[k] * dqs[k] + 0.5 * c.curvature[k] * dqs[k] * dqs[k] + c.W.row(k).dot(dlambda));
+    };
     for (int k = 0; k < m; ++k)
       if (!c.cand[k].smooth && ncp.lambda[k] > 0 && std::abs(dqs[k]) > 1e-3 * std::abs(c.q_build)) // its own rigid state q + s_k
         throw SolverError("condensed re-solve: stored candidate slave node " + std::to_string(c.cand[k].point.node) +
@@ -128,11 +132,11 @@ namespace gearfem::contact
                           ", whose gap is not smooth in the rotation (its closest point jumps), carries load away "
                           "from the build torque: build the condensed cycle nearer this load");
     for (int k = 0; k < m; ++k)
-      if (c.cand[k].edge && approach[k] > 0.5 * c.search_distance)
+      if (c.cand[k].edge && approach(k) > 0.5 * c.search_distance)
         throw SolverError("condensed re-solve: the contact reaches the edge of the stored candidates (slave node " +
                           std::to_string(c.cand[k].point.node) + " of body " +
                           std::to_string(c.cand[k].point.slave_body) + " approaches the mating flank by " +
-                          to_string_g(approach[k] * 1e6) + " um more than at the build, over half the search distance " +
+                          to_string_g(approach(k) * 1e6) + " um more than at the build, over half the search distance " +
                           to_string_g(c.search_distance * 1e6) +
                           " um): the condensed cycle does not cover this load or modification; build it at a "
                           "higher torque or with a larger Contact/Search distance");
