@@ -667,7 +667,7 @@ namespace gearfem::mesh
     // A graded mesh that snapping to the exact outline leaves with an inverted cell (the
     // Parker gear at h_contact = h_fillet = 0.05 mm, a fillet cell) is not used: the mesh is
     // made again without the graded pass, through the retries of phase 5.
-    if (mesh_once(true) && quality(out).n_inverted > 0 && options.fallbacks)
+    if (mesh_once(options.grade_short) && quality(out).n_inverted > 0 && options.fallbacks)
       mesh_once(false);
     out.mesh_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();

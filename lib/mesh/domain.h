@@ -133,6 +133,11 @@ namespace gearfem::mesh
     /// (mesh_domain): retry, then subdivide (true), or throw RecombinationFailed (false: a
     /// caller that can try other sizes, choice/).
     bool fallbacks = true;
+    /// When the first recombination leaves triangles and the outline has short pieces, mesh
+    /// again with the size field graded to them (mesh_domain) before the retries; false: go
+    /// straight to the retries (or RecombinationFailed), as mesh_gear_tiled's first attempts
+    /// at a coarse tile do.
+    bool grade_short = true;
   };
 
   /// The first all-quad recombination failed and MeshingOptions::fallbacks was off.

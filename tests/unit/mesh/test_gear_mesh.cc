@@ -373,3 +373,35 @@ TEST(GearMesh, TiledTeethJoinIntoTheWholeGear)
             << " deg, " << tiled.mesh_seconds << " s; whole " << whole.cells.size() << " cells, " << whole.mesh_seconds
             << " s" << std::endl;
 }
+
+// A coarse tooth's tile whose first quad recombination leaves triangles is meshed again a
+// little finer, not graded to its short half root lands. The 41-tooth pinion of
+// validation/model_choice's random 1 (m 2.5, x +0.5) at the choice's companion sizes: at
+// h_tooth 2 mm gmsh's Blossom left four triangles in the coarse tile, whose graded remesh had
+// 91 cells instead of about 35 (4223 cells in the gear against 2088 at h_tooth 1.8 mm).
+// Reference: monotonicity in the size asked for: a coarser outline on the unloaded teeth
+// must not give more cells than a finer one; and the joined mesh is conforming with no
+// inverted cell.
+TEST(GearMesh, ACoarseTileThatFailsToRecombineIsNotGraded)
+{
+  const auto tooth = make_tooth(41, 0.5, 2.5);
+  mesh::GearMeshParameters p;
+  p.h_contact  = 2.5e-3 / 22.5;
+  p.h_fillet   = 2.5e-3 / 6;
+  p.h_body     = 3.75e-3;
+  p.fine_teeth = "0";
+  std::map<double, std::size_t> cells;
+  for (const double h : {1.8e-3, 2.0e-3})
+    {
+      p.h_tooth = h;
+      std::string why;
+      const auto tiled = mesh_tiled(tooth, p, why);
+      ASSERT_FALSE(tiled.cells.empty()) << why;
+      EXPECT_EQ(mesh::quality(tiled).n_inverted, 0u);
+      expect_conforming(tiled);
+      cells[h] = tiled.cells.size();
+    }
+  std::cout << "z 41 m 2.5 x +0.5 pinion: " << cells[1.8e-3] << " cells at h_tooth 1.8 mm, " << cells[2.0e-3]
+            << " at 2 mm" << std::endl;
+  EXPECT_LE(cells[2.0e-3], cells[1.8e-3]);
+}
