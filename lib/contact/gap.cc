@@ -205,12 +205,21 @@ namespace gearfem::contact
     return true;
   }
 
-  TwoBodyContact::SearchResult TwoBodyContact::search(const Scene &scene, double q) const
+  double TwoBodyContact::candidate_band(double q) const
+  {
+    const double approach = std::abs(q) * (drive_.kind == Drive::Kind::rotation ? cache_[0].r_max : 1.0);
+    return std::max(options_.search_distance / 30, 2 * approach);
+  }
+
+  TwoBodyContact::SearchResult TwoBodyContact::search(const Scene &scene, double q, double band,
+                                                      const std::vector<double> *lambda_node) const
   {
     const geometry::Placement P[2] = {placed(scene, 1, q), placed(scene, 2, q)};
     SearchResult r;
     std::vector<int> face_sample[2] = {std::vector<int>(s1_->faces().size(), -1),
                                        std::vector<int>(s2_->faces().size(), -1)};
+    std::vector<Candidate> found;
+    double g_min = std::numeric_limits<double>::infinity();
     for (const auto &[S, i] : slaves(scene))
       {
         if (!cache_[S - 1].node_zone[i])
@@ -223,8 +232,27 @@ namespace gearfem::contact
           continue;
         c.at.x = nd.x;
         c.g    = c.at.g;
+        g_min  = std::min(g_min, c.g);
+        found.push_back(std::move(c));
+      }
+    // A node that carries a force, or shares a face with one, stays: its recovered pressure
+    // (ContactSurface::recover_pressure spreads a face's force over the face's nodes) is
+    // reported whatever its gap.
+    const auto loaded = [&](const Candidate &c) {
+      if (!lambda_node)
+        return false;
+      for (const int f : cache_[c.S - 1].node_faces[c.node])
+        for (const int n : surface(c.S).faces()[f].nodes)
+          if ((*lambda_node)[std::size_t(key(c.S, n))] != 0)
+            return true;
+      return (*lambda_node)[std::size_t(key(c.S, c.node))] != 0;
+    };
+    for (auto &c : found)
+      {
+        if (c.g > g_min + band && !loaded(c))
+          continue;
         if (options_.gap == GapRule::integrated)
-          integrate_gap(scene, q, c, r.samples, face_sample[S - 1]);
+          integrate_gap(scene, q, c, r.samples, face_sample[c.S - 1]);
         r.cand.push_back(std::move(c));
       }
     return r;

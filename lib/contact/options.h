@@ -39,6 +39,11 @@ namespace gearfem::contact
     double penalty_factor = 100.0;
     /// Slave nodes farther than this from the master (either side) are not candidates [m].
     double search_distance = 0.3e-3;
+    /// Each geometry iteration solves only the nodes whose gap is within a band above the
+    /// smallest (TwoBodyContact::candidate_band) and those that carry or share a face with a
+    /// force; false: every node within the search distance. The converged solution is the
+    /// same either way; not a Contact entry.
+    bool candidate_band = true;
     /// Relative tolerance of the drive coordinate, forces and torque.
     double tolerance = 1e-9;
     int max_active_set_iterations = 60;

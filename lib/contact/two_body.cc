@@ -233,13 +233,17 @@ namespace gearfem::contact
       {
         keep_zone(q);
         auto t0 = Clock::now();
-        SearchResult sr = search(scene, q);
+        const double band =
+          options_.candidate_band && 2 * it < options_.max_geometry_iterations ?
+            candidate_band(q) :
+            std::numeric_limits<double>::infinity();
+        SearchResult sr   = search(scene, q, band, &lambda_node);
         out.t_search += since(t0);
         if (zone_breach_)
           {
             keep_zone(q);
             t0 = Clock::now();
-            sr = search(scene, q);
+            sr = search(scene, q, band, &lambda_node);
             out.t_search += since(t0);
             if (zone_breach_)
               throw SolverError("contact search: a projection reads the elastic state outside the contact zone "

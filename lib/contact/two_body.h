@@ -53,6 +53,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <limits>
 #include <vector>
 
 namespace gearfem::contact
@@ -316,7 +317,23 @@ namespace gearfem::contact
     };
     ContactSolution solve_once(const Scene &scene, Control control, double value,
                                const ContactSolution *warm);
-    SearchResult search(const Scene &scene, double q) const;
+    /// The candidates: the slave nodes of the zone within the search distance of the master,
+    /// with their gaps. With `band` finite, only those whose nodal gap is within `band` of the
+    /// smallest one, or that carry a force in `lambda_node` (by key; may be null) or share a
+    /// face with a node that does, are kept:
+    /// the others cannot touch within one iteration (solve_once's candidate_band).
+    /// The band of solve_once's search (search) at drive value q: twice the rigid approach
+    /// |q| r_max (the largest surface radius of body 1; 1 for a translation), at least a
+    /// thirtieth of the search distance (10 um at the default 0.3 mm). The candidates only
+    /// cut what each iteration solves: a node left out has a gap above the smallest by the
+    /// band at the iteration's state, and a settled iteration moves the state by far less,
+    /// so the converged solution is the one over every node within the search distance
+    /// (validation/model_choice's random 1 at m/30: the same sweep.csv, 38 % less contact
+    /// time, the same geometry iterations). The second half of the geometry iterations
+    /// searches without a band.
+    double candidate_band(double q) const;
+    SearchResult search(const Scene &scene, double q, double band = std::numeric_limits<double>::infinity(),
+                        const std::vector<double> *lambda_node = nullptr) const;
     /// Project slave point xs (pair frame) onto body M's displaced master (fixed point on the
     /// master displacement). false when nothing lies within the search distance.
     /// `slave_offset`: the slave body's gap modification at the point [m].
