@@ -50,10 +50,10 @@
 #include <Eigen/Dense>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <unordered_map>
-#include <limits>
 #include <vector>
 
 namespace gearfem::contact
@@ -317,11 +317,6 @@ namespace gearfem::contact
     };
     ContactSolution solve_once(const Scene &scene, Control control, double value,
                                const ContactSolution *warm);
-    /// The candidates: the slave nodes of the zone within the search distance of the master,
-    /// with their gaps. With `band` finite, only those whose nodal gap is within `band` of the
-    /// smallest one, or that carry a force in `lambda_node` (by key; may be null) or share a
-    /// face with a node that does, are kept:
-    /// the others cannot touch within one iteration (solve_once's candidate_band).
     /// The band of solve_once's search (search) at drive value q: twice the rigid approach
     /// |q| r_max (the largest surface radius of body 1; 1 for a translation), at least a
     /// thirtieth of the search distance (10 um at the default 0.3 mm). The candidates only
@@ -332,6 +327,11 @@ namespace gearfem::contact
     /// time, the same geometry iterations). The second half of the geometry iterations
     /// searches without a band.
     double candidate_band(double q) const;
+    /// The candidates: the slave nodes of the zone within the search distance of the master,
+    /// with their gaps. With `band` finite, only those whose nodal gap is within `band` of the
+    /// smallest one, or that carry a force in `lambda_node` (by key; may be null) or share a
+    /// face with a node that does, are kept: the others cannot touch within one iteration
+    /// (candidate_band).
     SearchResult search(const Scene &scene, double q, double band = std::numeric_limits<double>::infinity(),
                         const std::vector<double> *lambda_node = nullptr) const;
     /// Project slave point xs (pair frame) onto body M's displaced master (fixed point on the
