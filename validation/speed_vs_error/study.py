@@ -15,6 +15,7 @@ calibrated model with each torque held out), and the condensed cycles of two FE 
 rung with a finished result (results/<pair>/<rung>/done) is not run again.
 """
 import argparse
+import json
 import os
 import re
 import shutil
@@ -29,6 +30,7 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 GEARFEM = os.path.join(os.environ.get("GEARFEM_BUILD_DIR", os.path.join(ROOT, "build")), "app", "gearfem")
 OUT = os.path.join(HERE, "results")
 POSITIONS = 40
+CONDENSED_RUNS = 3  # re-solves of each condensed cycle; the smallest sweep CPU is kept
 
 
 def prm_text(sections):
@@ -126,7 +128,8 @@ def run_fe(key, pair, name, overrides, reuse):
 
 def run_condensed(key, pair, name, overrides, reuse):
     """`gearfem condense` of an FE rung at its largest torque, then `gearfem solve --condensed`
-    at the three torques. cost.txt: the condense run (the set-up of this rung) and the re-solve."""
+    at the three torques, three times (the run with the smallest sweep CPU kept in out/).
+    cost.txt: the condense run (the set-up of this rung) and that re-solve."""
     d = new_rung(key, pair, name, "condense", overrides, reuse)
     if d is None:
         return "reused"
@@ -134,10 +137,25 @@ def run_condensed(key, pair, name, overrides, reuse):
     rc, wall, cpu, rss = timed([GEARFEM, "condense", prm, "--output-dir", os.path.join(d, "cycle")],
                                os.path.join(d, "condense.log"), d)
     cost = dict(condense_wall=wall, condense_cpu=cpu, condense_rss_mb=rss)
-    if rc == 0:
+    # The re-solve's sweep takes milliseconds, within the noise of a shared machine (one run
+    # read 9.6 ms per cycle where five in a row read 5.9-6.3): the smallest of three runs.
+    best = None
+    for k in range(CONDENSED_RUNS if rc == 0 else 0):
+        out = os.path.join(d, "out" if k == 0 else f"out_{k}")
         rc, wall, cpu, rss = timed([GEARFEM, "solve", prm, "--condensed", os.path.join(d, "cycle", "condensed.h5"),
-                                    "--output-dir", os.path.join(d, "out")], os.path.join(d, "solve.log"), d)
-        cost.update(wall=wall, cpu=cpu, rss_mb=rss)
+                                    "--output-dir", out], os.path.join(d, "solve.log"), d)
+        if rc != 0:
+            break
+        with open(os.path.join(out, "run.json")) as f:
+            sweep = json.load(f)["cost"]["cpu_sweep_seconds"]
+        if best is None or sweep < best[0]:
+            best = (sweep, out)
+            cost.update(wall=wall, cpu=cpu, rss_mb=rss)
+    if rc == 0 and best is not None and best[1] != os.path.join(d, "out"):
+        shutil.rmtree(os.path.join(d, "out"))
+        os.rename(best[1], os.path.join(d, "out"))
+    for k in range(1, CONDENSED_RUNS):
+        shutil.rmtree(os.path.join(d, f"out_{k}"), ignore_errors=True)
     finish_rung(d, rc, **cost)
     return f"exit {rc}, condense {cost['condense_wall']:.1f} s wall, re-solve {cost.get('wall', 0):.2f} s wall"
 
