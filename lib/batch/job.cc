@@ -11,6 +11,7 @@
 #include "solve/run.h"
 #include "condensed/cycle.h"
 #include "condensed/resolve.h"
+#include "route/route.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
@@ -283,8 +284,11 @@ namespace gearfem::batch
           for (std::size_t j = 0; j < study.designs.designs.size(); ++j)
             try
               {
-                auto prm = design_handler(study, j);
-                auto &t  = c.key_torques[solve::model_key(solve::parse_gear_contact_input(*prm))];
+                auto prm                      = design_handler(study, j);
+                const route::Request request = route::parse_request(*prm);
+                if (route::choose(request).first != route::Route::full_fe)
+                  continue; // a Target or Deviations design takes its own route
+                auto &t = c.key_torques[solve::model_key(request.input)];
                 for (const double T : design_torques(*prm))
                   t.push_back(T);
               }
@@ -295,7 +299,6 @@ namespace gearfem::batch
       const auto &Ts = c.key_torques[key];
       if (Ts.size() < 3)
         return false;
-      const double lo = *std::min_element(Ts.begin(), Ts.end()), hi = *std::max_element(Ts.begin(), Ts.end());
       const solve::GearContactInput *kept = input.get();
       std::unique_ptr<contact::GearContactModel> own;
       auto &model = job_model(cache, key, input, own, rec.shared_model);
@@ -303,7 +306,7 @@ namespace gearfem::batch
         {
           c.cycle.reset();
           c.cycle = std::make_unique<condensed::CondensedCycle>(
-            condensed::build_cycle(model, *kept, std::sqrt(lo * hi), lo, hi));
+            condensed::cycle_for(model, *kept, condensed::cycle_range(Ts, condensed::CycleUse::given_torques)));
         }
       try
         {
@@ -323,7 +326,41 @@ namespace gearfem::batch
       rec.status = "ok";
       return true;
     }
+    /// Thrown by run_job past a design that run_routed_job solved.
+    struct JobDone
+    {};
+
+    /// A design whose route is not the plain full FE (Solve/Target, Deviations): solved by
+    /// route::run like `gearfem solve` would, its run-record members in record.json.
+    void run_routed_job(route::Request &request, JobRecord &rec)
+    {
+      const route::Outcome o = route::run(request);
+      rec.route              = route_token(o.route);
+      std::ostringstream json;
+      json << "{";
+      for (std::size_t k = 0; k < o.record.size(); ++k)
+        json << (k ? ",\n " : "\n ") << "\"" << o.record[k].first << "\": " << o.record[k].second;
+      json << "\n}\n";
+      write_file_atomically(request.output_dir / "record.json", json.str());
+      if (o.failure.empty())
+        rec.status = "ok", rec.message = o.why;
+      else
+        rec.message = "solver failure: " + o.failure;
+    }
   } // namespace
+
+  std::string route_token(route::Route r)
+  {
+    switch (r)
+      {
+        case route::Route::full_fe: return "full";
+        case route::Route::condensed_cycle: return "condensed";
+        case route::Route::target: return "target";
+        case route::Route::hunting_cycle: return "hunting";
+        case route::Route::deviations_in_geometry: return "geometry";
+      }
+    return "full";
+  }
 
   JobRecord run_job(const Study &study, std::size_t i, const std::filesystem::path &jobs_root, ModelCache *cache)
   {
@@ -343,15 +380,25 @@ namespace gearfem::batch
         std::error_code ec;
         std::filesystem::remove(dir / job_record_file, ec); // a re-run replaces the old record
 
-        auto input = std::make_unique<solve::GearContactInput>(solve::parse_gear_contact_input(*prm));
+        route::Request request = route::parse_request(*prm);
+        rec.contact_ratio      = request.input.meshing().contact_ratio();
+        request.output_dir     = dir;
+        request.input_hash     = rec.key;
+        request.input_name     = job_parameters_file;
+        request.resume         = journal_matches(dir, rec.key);
+        if (route::choose(request).first != route::Route::full_fe)
+          {
+            run_routed_job(request, rec);
+            throw JobDone{};
+          }
+        auto input = std::make_unique<solve::GearContactInput>(std::move(request.input));
         const solve::GearContactInput &in = *input;
         solve::SolveRunOptions opt;
-        opt.post          = post::parse_post_parameters(*prm);
-        rec.contact_ratio = in.meshing().contact_ratio();
+        opt.post          = request.post;
         opt.output_dir    = dir;
         opt.input_hash    = rec.key;
         opt.input_name    = job_parameters_file;
-        opt.resume        = journal_matches(dir, rec.key);
+        opt.resume        = request.resume;
         const std::string key = solve::model_key(in);
         std::string note;
         if (!run_condensed_job(study, cache, key, input, opt, rec, note))
@@ -368,6 +415,8 @@ namespace gearfem::batch
                             " positions finished, kept in results.h5)";
           }
       }
+    catch (const JobDone &)
+      {}
     catch (const InputError &e)
       {
         rec.message = std::string("invalid design: ") + e.what();

@@ -9,6 +9,7 @@
 // A job never throws: an invalid design, a solver failure or any other error is recorded
 // with its message.
 #include "batch/study.h"
+#include "route/route.h"
 
 #include <filesystem>
 #include <memory>
@@ -34,10 +35,14 @@ namespace gearfem::batch
     /// The job re-used the factorised model of an earlier job of its rank (ModelCache): its
     /// wall time has no mesh and factorisation in it.
     bool shared_model = false;
-    /// "full" (solve::run_solve) or "condensed" (condensed::run_condensed on the rank's cycle).
+    /// "full" (solve::run_solve) or "condensed" (condensed::run_condensed on the rank's cycle);
+    /// for a design with Solve/Target or Deviations, route::run's route (route_token).
     std::string route = "full";
     bool ok() const { return status == "ok"; }
   };
+
+  /// The job record's word for a route of route::run: full, condensed, target, hunting, geometry.
+  std::string route_token(route::Route r);
 
   /// Write `dir`/job.txt atomically. Read it back: nullopt if missing or unreadable.
   void write_job_record(const std::filesystem::path &dir, const JobRecord &r);

@@ -1,5 +1,7 @@
 #include "batch/study.h"
 
+#include "route/route.h"
+
 #include "base/errors.h"
 #include "base/number.h"
 #include "solve/input.h"
@@ -73,8 +75,7 @@ namespace gearfem::batch
 
     void declare_case(dealii::ParameterHandler &prm)
     {
-      solve::declare_gear_contact_input(prm);
-      post::declare_post_parameters(prm);
+      route::declare_request(prm); // a design is a `gearfem solve` input, Deviations included
     }
   } // namespace
 

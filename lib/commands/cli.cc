@@ -208,6 +208,29 @@ namespace gearfem::commands
         }
     }
 
+  } // namespace
+
+  void parse_input_text(const std::string &text, const std::string &name, dealii::ParameterHandler &prm)
+  {
+    try
+      {
+        dealii::ParameterHandler all;
+        for (const auto &other : registry())
+          if (other.declare && other.parse_input)
+            other.declare(all);
+        declare_output(all);
+        all.parse_input_from_string(text, "", false);
+        prm.parse_input_from_string(text, "", true);
+        params::check_entries(all);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        throw InputError("in " + name + ": " + params::exception_text(e));
+      }
+  }
+
+  namespace
+  {
     int run_command(const Command &cmd, int argc, char **argv)
     {
       RunContext ctx;

@@ -70,6 +70,11 @@ namespace gearfem::commands
   /// All commands, in the order `gearfem --help` lists them.
   const std::vector<Command> &registry();
 
+  /// Checks the .prm `text` (named `name` in messages) against the parameters of every
+  /// command, as the CLI checks an input file (a misspelt entry is an InputError naming it),
+  /// then reads the entries `prm` declares. For callers without a file (the Python module).
+  void parse_input_text(const std::string &text, const std::string &name, dealii::ParameterHandler &prm);
+
   /// The CLI entry point used by app/main.cc. Returns the process exit status.
   int main(int argc, char **argv);
 

@@ -4,7 +4,7 @@
 // variant.prm --condensed condensed.h5` then re-solves any torque or gap-route relief on it.
 #include "base/errors.h"
 #include "commands/command.h"
-#include "condensed/cycle.h"
+#include "condensed/condense.h"
 #include "condensed/parameters.h"
 #include "condensed/table.h"
 #include "io/mesh_table_io.h"
@@ -14,6 +14,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -35,22 +36,17 @@ namespace gearfem::commands
       (void)post::parse_post_parameters(prm);
       const auto cp = condensed::parse_condense_parameters(prm);
       condensed::check_condensable(in);
-      const auto &Ts = in.solve.torques;
-      const double t_min = *std::min_element(Ts.begin(), Ts.end()), t_max = *std::max_element(Ts.begin(), Ts.end());
-      const double T  = cp.build_torque > 0 ? cp.build_torque : t_max;
-      const double lo = cp.torque_lo > 0 ? cp.torque_lo : std::min(0.25 * t_min, T);
-      const double hi = cp.torque_hi > 0 ? cp.torque_hi : std::max(2 * t_max, T);
+      const condensed::CycleRange range = condensed::condense_range(in, cp);
       out << "condense: z " << in.pair->gear(1).teeth() << "/" << in.pair->gear(2).teeth() << ", "
-          << in.positions().size() << " positions at the build torque " << T << " N m for torques " << lo << " to "
-          << hi << " N m, method "
-          << contact::to_string(in.contact.method) << "\n";
+          << in.positions().size() << " positions at the build torque " << range.build << " N m for torques "
+          << range.lo << " to " << range.hi << " N m, method " << contact::to_string(in.contact.method) << "\n";
       if (ctx.validate_only)
         return;
-      auto model = in.model();
-      out << "model: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3) << model->setup_seconds()
-          << " s" << std::endl;
-      condensed::CondensedCycle c = condensed::build_cycle(*model, in, T, lo, hi, &out, cp.scene_ratio);
+      condensed::CondensedCycle c = condensed::condense(in, cp, &out);
       c.input_name = ctx.input_file.filename().string();
+      std::ostringstream text;
+      text << std::ifstream(ctx.input_file).rdbuf();
+      c.input_text = text.str();
       const auto file = ctx.output_dir / condensed::file_name;
       condensed::write_cycle(c, file);
       std::size_t m = 0, scenes = 0;

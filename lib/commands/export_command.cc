@@ -1,15 +1,15 @@
 // `gearfem export case.prm`: mesh-stiffness and transmission-error tables for the tools
 // engineers already use (ROSS arrays, Simpack/Adams spline tables, COMSOL/NX TE tables, the
-// two-sided force table), from a solve result or a mesh table (lib/exchange, docs/export.md).
+// two-sided force table), from a solve result or a mesh table (lib/export, docs/export.md).
 #include "analytical/from_geometry.h"
 #include "base/errors.h"
 #include "base/units.h"
 #include "calibration/model.h"
 #include "commands/command.h"
-#include "exchange/force_table.h"
-#include "exchange/formats.h"
-#include "exchange/grid.h"
-#include "exchange/parameters.h"
+#include "export/force_table.h"
+#include "export/formats.h"
+#include "export/grid.h"
+#include "export/parameters.h"
 #include "geometry/parameters.h"
 #include "io/mesh_table_io.h"
 #include "io/solve_results.h"
@@ -27,10 +27,10 @@ namespace gearfem::commands
     void declare(dealii::ParameterHandler &prm)
     {
       geometry::declare_geometry_parameters(prm);
-      exchange::declare_export_parameters(prm);
+      exports::declare_export_parameters(prm);
     }
 
-    bool wants(const exchange::ExportInput &in, const std::string &f)
+    bool wants(const exports::ExportInput &in, const std::string &f)
     {
       return std::count(in.formats.begin(), in.formats.end(), f) || std::count(in.formats.begin(), in.formats.end(), "all");
     }
@@ -39,8 +39,8 @@ namespace gearfem::commands
     {
       std::ostream &out = *ctx.out;
       const auto pair = geometry::build_pair(geometry::parse_geometry_parameters(prm));
-      const exchange::ExportInput in = exchange::parse_export_parameters(prm);
-      exchange::PairInfo pi;
+      const exports::ExportInput in = exports::parse_export_parameters(prm);
+      exports::PairInfo pi;
       pi.z1 = pair.gear(1).teeth(), pi.z2 = pair.gear(2).teeth();
       pi.base_radius   = pair.base_radius(1);
       pi.theta_A       = pair.point("A").roll_angle;
@@ -84,18 +84,18 @@ namespace gearfem::commands
         out << "note: no force table (one-sided torque table and no Export/Backlash)\n";
       const bool do_grid  = wants(in, "ross") || wants(in, "spline") || wants(in, "te");
 
-      std::optional<exchange::CycleGrid> grid;
+      std::optional<exports::CycleGrid> grid;
       if (do_grid)
-        grid = table ? exchange::grid_from_table(*table, pi, in.torques, "Export/Torques") :
-                       exchange::grid_from_solve(*results, pi, in.torques, "Export/Torques");
-      std::optional<exchange::ForceTable> force;
+        grid = table ? exports::grid_from_table(*table, pi, in.torques, "Export/Torques") :
+                       exports::grid_from_solve(*results, pi, in.torques, "Export/Torques");
+      std::optional<exports::ForceTable> force;
       if (do_force)
         {
           const double b = table->two_sided() ? table->backlash : in.backlash;
           const double psi = b >= 0 ? calibration::reverse_offset(analytical::involute_tooth(pair.gear(1)),
                                                                   analytical::pair_line(pair), b) :
                                       0.0;
-          force = exchange::force_table(*table, in.backlash, psi, "Export/Backlash");
+          force = exports::force_table(*table, in.backlash, psi, "Export/Backlash");
         }
       out << "export: " << source << ", pair " << pi.z1 << "/" << pi.z2 << ", geometry " << pi.geometry_hash << "\n";
       if (grid)
@@ -107,23 +107,23 @@ namespace gearfem::commands
       const std::string prov = source + ", gearfem export " + ctx.input_file.filename().string();
       std::vector<std::string> written;
       if (grid && wants(in, "ross"))
-        exchange::write_ross_json(ctx.output_dir / "ross_mesh.json", exchange::ross_arrays(*grid, pi), pi, prov),
+        exports::write_ross_json(ctx.output_dir / "ross_mesh.json", exports::ross_arrays(*grid, pi), pi, prov),
           written.push_back("ross_mesh.json");
       if (grid && wants(in, "spline"))
         {
-          exchange::write_spline_csv(ctx.output_dir / "spline_ste.csv", *grid, "ste");
-          exchange::write_spline_csv(ctx.output_dir / "spline_stiffness.csv", *grid, "stiffness");
+          exports::write_spline_csv(ctx.output_dir / "spline_ste.csv", *grid, "ste");
+          exports::write_spline_csv(ctx.output_dir / "spline_stiffness.csv", *grid, "stiffness");
           written.push_back("spline_ste.csv"), written.push_back("spline_stiffness.csv");
         }
       if (grid && wants(in, "te"))
         {
-          exchange::write_te_table(ctx.output_dir / "te_mesh_cycle.txt", *grid, pi, false, prov);
-          exchange::write_te_table(ctx.output_dir / "te_revolution.txt", *grid, pi, true, prov);
+          exports::write_te_table(ctx.output_dir / "te_mesh_cycle.txt", *grid, pi, false, prov);
+          exports::write_te_table(ctx.output_dir / "te_revolution.txt", *grid, pi, true, prov);
           written.push_back("te_mesh_cycle.txt"), written.push_back("te_revolution.txt");
         }
       if (force)
         {
-          exchange::write_force_csv(ctx.output_dir / "force_table.csv", *force);
+          exports::write_force_csv(ctx.output_dir / "force_table.csv", *force);
           written.push_back("force_table.csv");
           out << "  force table: " << force->theta.size() << " x " << force->delta.size() << ", backlash "
               << force->backlash * 1e6 << " um"

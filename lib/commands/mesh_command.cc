@@ -36,9 +36,7 @@ namespace gearfem::commands
     /// Zoom box around tooth 0 in mm: xmin,xmax,ymin,ymax (half width p, radii lo..hi [m]).
     std::string zoom_box(double p, double lo, double hi)
     {
-      std::ostringstream s;
-      s << 1e3 * -1.6 * p << "," << 1e3 * 1.6 * p << "," << 1e3 * lo << "," << 1e3 * hi;
-      return s.str();
+      return to_string_g(-1.6e3 * p) + "," + to_string_g(1.6e3 * p) + "," + to_string_g(1e3 * lo) + "," + to_string_g(1e3 * hi);
     }
     std::string zoom_box(const geometry::ToothProfile &t)
     {

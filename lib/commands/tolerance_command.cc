@@ -1,7 +1,6 @@
-// `gearfem tolerance study.prm`: the Monte Carlo tolerance study (tolerance/study.h) of a `solve`
+// `gearfem tolerance study.prm`: the Monte Carlo tolerance study (deviations/study.h) of a `solve`
 // input with `Deviations/Accuracy grade`, on MPI ranks: parse, get the condensed cycle (rank 0
 // builds or reads it, the others read it), run each rank's samples, merge and report on rank 0.
-#include "base/atomic_file.h"
 #include "base/errors.h"
 #include "base/memory.h"
 #include "batch/run.h"
@@ -10,9 +9,9 @@
 #include "condensed/resolve.h"
 #include "post/parameters.h"
 #include "solve/input.h"
-#include "tolerance/hunting.h"
-#include "tolerance/parameters.h"
-#include "tolerance/study.h"
+#include "deviations/hunting.h"
+#include "deviations/parameters.h"
+#include "deviations/study.h"
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
@@ -34,45 +33,24 @@ namespace gearfem::commands
     {
       solve::declare_gear_contact_input(prm);
       post::declare_post_parameters(prm);
-      tolerance::declare_deviation_parameters(prm);
-      tolerance::declare_tolerance_parameters(prm);
+      deviations::declare_deviation_parameters(prm);
+      deviations::declare_tolerance_parameters(prm);
     }
 
     struct Inputs
     {
       solve::GearContactInput in;
       post::PostOptions post;
-      tolerance::DeviationParameters dev;
-      tolerance::ToleranceParameters tol;
+      deviations::DeviationParameters dev;
+      deviations::ToleranceParameters tol;
     };
 
     Inputs parse(dealii::ParameterHandler &prm)
     {
       Inputs i{solve::parse_gear_contact_input(prm), post::parse_post_parameters(prm),
-               tolerance::parse_deviation_parameters(prm), tolerance::parse_tolerance_parameters(prm)};
-      if (i.dev.grade == 0)
-        throw InputError("Deviations/Accuracy grade", "0", "1 .. 11",
-                         "a tolerance study draws its samples within an ISO 1328-1 grade");
-      tolerance::check_one_pitch_cycle(i.in);
-      condensed::check_condensable(i.in);
-      (void)tolerance::resolve_deviations(i.dev, *i.in.pair, 0); // the grade's range of application
+               deviations::parse_deviation_parameters(prm), deviations::parse_tolerance_parameters(prm)};
+      deviations::check_study_input(i.in, i.dev);
       return i;
-    }
-
-    /// The ISO 1328-1 tolerances of both gears, as a table.
-    std::string tolerance_table(const Inputs &i)
-    {
-      std::ostringstream s;
-      s << "| gear | f_pT | F_pT | f_HaT | f_faT | F_rT |\n|---|---|---|---|---|---|\n" << std::setprecision(4);
-      for (int b = 1; b <= 2; ++b)
-        {
-          const auto &g  = i.in.pair->gear(b);
-          const double m = g.parameters().rack.module;
-          const auto t   = geometry::iso1328_tolerances(i.dev.grade, m, m * g.teeth(), g.parameters().face_width);
-          s << "| " << b << " | " << t.f_pT * 1e6 << " | " << t.F_pT * 1e6 << " | " << t.f_HaT * 1e6 << " | "
-            << t.f_faT * 1e6 << " | " << t.F_rT * 1e6 << " |\n";
-        }
-      return s.str() + "(um; ISO 1328-1:2013, grade " + std::to_string(i.dev.grade) + ")\n";
     }
 
     condensed::CondensedCycle get_cycle(const Inputs &i, const RunContext &ctx, const batch::MpiSession &mpi,
@@ -86,14 +64,7 @@ namespace gearfem::commands
       if (mpi.rank() == 0 && i.tol.cycle_file.empty() && !std::filesystem::exists(stored))
         try
           {
-            const auto &T = i.in.solve.torques;
-            const double lo = 0.25 * *std::min_element(T.begin(), T.end()), hi = 2 * *std::max_element(T.begin(), T.end());
-            auto model = i.in.model();
-            if (out)
-              *out << "condensed cycle: building it (" << model->n_dofs() << " DoFs) for " << lo << " .. " << hi
-                   << " N m" << std::endl;
-            condensed::write_cycle(
-              condensed::build_cycle(*model, i.in, *std::max_element(T.begin(), T.end()), lo, hi, out), stored);
+            condensed::write_cycle(deviations::study_cycle(i.in, out), stored);
           }
         catch (...)
           {
@@ -136,7 +107,7 @@ namespace gearfem::commands
              << geometry::to_string(i->dev.distribution) << ", seed " << i->dev.seed << "), " << pitches
              << " pitches x " << i->in.positions().size() << " positions x " << i->in.solve.torques.size()
              << " torque(s) each\n"
-             << tolerance_table(*i);
+             << deviations::tolerance_table(i->in, i->dev.grade);
       if (ctx.validate_only)
         return;
       if (mpi.rank() == 0)
@@ -153,14 +124,14 @@ namespace gearfem::commands
         }
       const condensed::CondensedCycle &cycle = *got;
       const double cpu0 = process_cpu_seconds();
-      tolerance::StudyOptions o;
+      deviations::StudyOptions o;
       o.samples = i->tol.samples, o.output_dir = ctx.output_dir, o.out = out;
       o.rank = mpi.rank(), o.size = mpi.size(), o.post = i->post;
       std::string failure;
       long solved = 0;
       try
         {
-          solved = tolerance::run_samples(cycle, i->in, i->dev, o);
+          solved = deviations::run_samples(cycle, i->in, i->dev, o);
         }
       catch (const SolverError &e)
         {
@@ -174,18 +145,11 @@ namespace gearfem::commands
             std::cerr << "gearfem tolerance, rank " << mpi.rank() << ": " << failure << std::endl;
           return;
         }
-      const auto samples = tolerance::merge_samples(ctx.output_dir, i->tol.samples, i->in.solve.torques.size());
-      const auto stats   = tolerance::statistics(samples);
-      tolerance::write_statistics(stats, ctx.output_dir / "statistics.csv");
-      const auto n_failed = tolerance::failed_samples(ctx.output_dir).size();
-      write_file_atomically(ctx.output_dir / "summary.md",
-                            "# Tolerance study\n\n" + tolerance_table(*i) + "\n" + tolerance::statistics_table(stats) +
-                              "\nfailed samples (not in the statistics; failed.rank*.csv): " + std::to_string(n_failed) +
-                              "\n");
+      const deviations::StudySummary sum = deviations::summarise_study(ctx.output_dir, i->in, i->dev, i->tol.samples);
+      const std::size_t complete         = sum.complete;
+      const auto &failed                 = sum.failed;
       run_plot_script("plot_tolerance.py", {ctx.output_dir.string()}, out);
-      const std::size_t complete = samples.size() / std::max<std::size_t>(1, i->in.solve.torques.size());
-      const auto failed          = tolerance::failed_samples(ctx.output_dir);
-      *out << "\n" << tolerance::statistics_table(stats) << "samples complete: " << complete << " of "
+      *out << "\n" << deviations::statistics_table(sum.statistics) << "samples complete: " << complete << " of "
            << i->tol.samples << ", failed: " << failed.size() << "; rank 0 solved " << solved << " now in " << std::setprecision(3) << cpu
            << " CPU-s (" << (solved > 0 ? cpu / double(solved * pitches * long(i->in.positions().size()) *
                                                       long(i->in.solve.torques.size())) * 1e3 : 0.0)

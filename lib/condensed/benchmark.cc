@@ -50,7 +50,7 @@ namespace gearfem::condensed
     auto model     = in.model();
     const double setup = model->setup_seconds();
     auto t0            = Clock::now();
-    const CondensedCycle cycle = build_cycle(*model, in, T, T / 4, 4 * T);
+    const CondensedCycle cycle = cycle_for(*model, in, cycle_range({T / 4, T, 4 * T}, CycleUse::given_torques));
     const double build = since(t0);
     std::size_t scenes = 0, m = 0;
     for (const auto &ps : cycle.cycle)

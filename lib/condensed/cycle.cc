@@ -91,22 +91,49 @@ namespace gearfem::condensed
     }
   } // namespace
 
-  CondensedCycle build_cycle(contact::GearContactModel &model, const solve::GearContactInput &in,
-                             double build_torque, double torque_lo, double torque_hi, std::ostream *out,
-                             double scene_ratio)
+  CycleRange cycle_range(const std::vector<double> &torques, CycleUse use, double build)
+  {
+    if (torques.empty())
+      throw InputError("Solve/Torques", "(none)", "at least one torque > 0 N m");
+    const double lo = *std::min_element(torques.begin(), torques.end());
+    const double hi = *std::max_element(torques.begin(), torques.end());
+    CycleRange r;
+    switch (use)
+      {
+        case CycleUse::given_torques:
+          r.build = build > 0 ? build : std::sqrt(lo * hi);
+          r.lo = std::min(lo, r.build), r.hi = std::max(hi, r.build);
+          break;
+        case CycleUse::variants:
+          r.build = build > 0 ? build : hi;
+          r.lo = std::min(0.25 * lo, r.build), r.hi = std::max(2 * hi, r.build);
+          break;
+        case CycleUse::slices:
+          r.build = build > 0 ? build : hi;
+          r.lo = std::min(lo / 8, r.build), r.hi = std::max(4 * hi, r.build);
+          break;
+      }
+    return r;
+  }
+
+  CondensedCycle cycle_for(contact::GearContactModel &model, const solve::GearContactInput &in,
+                           const CycleRange &range, const CycleOptions &options)
   {
     check_condensable(in);
-    CondensedCycle c = build_cycle(model, in.positions(), build_torque, torque_lo, torque_hi, out, scene_ratio);
+    CondensedCycle c = cycle_for(model, in.positions(), range, options);
     c.key           = condensed_key(in);
     c.geometry_hash = geometry::geometry_fingerprint(in.unmodified_pair ? *in.unmodified_pair : *in.pair);
     c.method        = contact::to_string(in.contact.method);
     return c;
   }
 
-  CondensedCycle build_cycle(contact::GearContactModel &model, const std::vector<std::pair<std::string, double>> &positions,
-                             double build_torque, double torque_lo, double torque_hi, std::ostream *out,
-                             double scene_ratio)
+  CondensedCycle cycle_for(contact::GearContactModel &model,
+                           const std::vector<std::pair<std::string, double>> &positions, const CycleRange &range,
+                           const CycleOptions &options)
   {
+    const double build_torque = range.build, torque_lo = range.lo, torque_hi = range.hi;
+    const double scene_ratio  = options.scene_ratio;
+    std::ostream *out         = options.out;
     if (!(scene_ratio == 0 || (scene_ratio > 1 && std::isfinite(scene_ratio))))
       throw InputError("Condense/Scene torque ratio", to_string_g(scene_ratio), "0 (no split) or > 1");
     require_greater("Condense/Build torque", build_torque, 0.0, "N m");

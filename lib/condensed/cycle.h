@@ -52,6 +52,9 @@ namespace gearfem::condensed
   {
     std::string key;        ///< condensed_key of the input it was built from
     std::string geometry_hash, input_name, method;
+    /// The .prm text of the input it was built from (attribute `input_text`; empty where the
+    /// file does not carry it): what a later re-solve varies (the Python module's load_cycle).
+    std::string input_text;
     double build_torque = 0; ///< [N m]
     /// Pinion torques [N m] a re-solve may take: the scenes of this range are stored.
     double torque_lo = 0, torque_hi = 0;
@@ -81,29 +84,67 @@ namespace gearfem::condensed
   /// stored operator is the frictionless one).
   void check_condensable(const solve::GearContactInput &in);
 
-  /// Run the FE over the positions of `in` at `build_torque` [N m] (> 0) on `model` (built
-  /// from `in`) and condense every position, for re-solves between `torque_lo` and
-  /// `torque_hi` [N m] (0 < lo <= build <= hi). Progress with i/N and ETA on `out` (may be
-  /// null). Throws SolverError when a position does not converge.
+  /// What a condensed cycle is for: it decides the torque range the cycle stores around the
+  /// torques it serves (cycle_range).
+  enum class CycleUse
+  {
+    /// Re-solved only at the torques it serves (Solve/Target's torque sweeps, a batch's designs,
+    /// the tip-relief optimiser, the condensed benchmark): built at their geometric middle,
+    /// which halves the largest load ratio to the build, for exactly their range.
+    given_torques,
+    /// Kept for variants of the design (`gearfem condense`, the hunting cycle, the Monte Carlo
+    /// study): deviations and reliefs move a tooth pair's load away from the nominal one, so
+    /// the range is widened to a quarter of the smallest and twice the largest torque; built at
+    /// the largest, where the rating loads are.
+    variants,
+    /// The transverse section of a helical pair (helical/run.h): crowning, misalignment and end
+    /// relief load a slice up to about twice and down to half of its even share, so the range of
+    /// `variants` is widened by two again (an eighth of the smallest, four times the largest
+    /// torque); built at the largest.
+    slices
+  };
+
+  /// A cycle's build torque and stored torque range [N m] (0 < lo <= build <= hi).
+  struct CycleRange
+  {
+    double build = 0, lo = 0, hi = 0;
+  };
+
+  /// The one torque-range rule of a condensed cycle: for `torques` (> 0, not empty) served for
+  /// `use` (CycleUse says each use's build torque and margin). `build` > 0 replaces the rule's
+  /// build torque (`Condense/Build torque`); the range then holds it. InputError naming
+  /// Solve/Torques for no torques.
+  CycleRange cycle_range(const std::vector<double> &torques, CycleUse use, double build = 0);
+
+  struct CycleOptions
+  {
+    /// Largest torque ratio one scene spans (`Condense/Scene torque ratio`); 0: no split.
+    double scene_ratio = 4.0;
+    std::ostream *out = nullptr; ///< progress with i/N and ETA; null: silent
+  };
+
+  /// The condensed cycle of `in` on `model` (built from `in`): the FE run over the positions of
+  /// `in` at range.build and every position condensed, for re-solves from range.lo to range.hi.
+  /// Throws SolverError when a position does not converge; InputError (naming the entry) for
+  /// an input the condensed route cannot serve (check_condensable) or a bad range.
   ///
   /// The condensation is exact at the load it was solved at; away from it the geometry of
   /// the candidates (their projections, the tip-corner rounding) is carried by the gap's
   /// curvature in q only, and the error grows with the load ratio (FZG type C, reference
   /// mesh: 0.8 % STE at a third of the build torque near a transition). Every scene that
-  /// spans more than `scene_ratio` (> 1; default_scene_ratio) is therefore split at
-  /// build_torque * ratio^(j + 1/2), each part solved at the build torque if it holds it,
+  /// spans more than options.scene_ratio (> 1) is therefore split at
+  /// build * ratio^(j + 1/2), each part solved at the build torque if it holds it,
   /// else at its geometric middle, so that a re-solve is never more than sqrt(ratio) from
-  /// the load its scene was solved at. 0: no split (one load per slave configuration).
-  CondensedCycle build_cycle(contact::GearContactModel &model, const solve::GearContactInput &in,
-                             double build_torque, double torque_lo, double torque_hi, std::ostream *out = nullptr,
-                             double scene_ratio = 4.0);
+  /// the load its scene was solved at.
+  CondensedCycle cycle_for(contact::GearContactModel &model, const solve::GearContactInput &in,
+                           const CycleRange &range, const CycleOptions &options = {});
 
   /// The same on given positions (name, roll angle [rad]) of `model`, without an input: the
   /// cycle's key, geometry hash and method are left empty (for a caller that owns the model,
   /// e.g. the tip-relief optimiser).
-  CondensedCycle build_cycle(contact::GearContactModel &model, const std::vector<std::pair<std::string, double>> &positions,
-                             double build_torque, double torque_lo, double torque_hi, std::ostream *out = nullptr,
-                             double scene_ratio = 4.0);
+  CondensedCycle cycle_for(contact::GearContactModel &model,
+                           const std::vector<std::pair<std::string, double>> &positions, const CycleRange &range,
+                           const CycleOptions &options = {});
 
   /// Write `c` to `file` atomically (docs/output-format.md).
   void write_cycle(const CondensedCycle &c, const std::filesystem::path &file);

@@ -155,6 +155,8 @@ namespace gearfem::condensed
       w.string_attribute(f.get(), "model_key", c.key);
       w.string_attribute(f.get(), "geometry_hash", c.geometry_hash);
       w.string_attribute(f.get(), "input", c.input_name);
+      if (!c.input_text.empty())
+        w.string_attribute(f.get(), "input_text", c.input_text);
       w.string_attribute(f.get(), "method", c.method);
       w.double_attribute(f.get(), "build_torque", c.build_torque);
       w.double_attribute(f.get(), "torque_lo", c.torque_lo);

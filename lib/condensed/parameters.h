@@ -15,7 +15,7 @@ namespace gearfem::condensed
     /// Torques a re-solve may take [N m]; 0: a quarter of the smallest and twice the
     /// largest of Solve/Torques.
     double torque_lo = 0, torque_hi = 0;
-    /// Largest torque ratio one scene spans (build_cycle); 0: no split.
+    /// Largest torque ratio one scene spans (condensed::CycleOptions); 0: no split.
     double scene_ratio = 4;
     /// FE-exact T(theta, delta) table (condensed/table.h) written to this file in the output
     /// folder; empty: none.

@@ -220,6 +220,8 @@ namespace gearfem::condensed
     c.key           = r.string_attribute(f.get(), "/", "model_key");
     c.geometry_hash = r.string_attribute(f.get(), "/", "geometry_hash");
     c.input_name    = r.string_attribute(f.get(), "/", "input");
+    if (H5Aexists(f.get(), "input_text") > 0)
+      c.input_text = r.string_attribute(f.get(), "/", "input_text");
     c.method        = r.string_attribute(f.get(), "/", "method");
     c.build_torque  = r.double_attribute(f.get(), "/", "build_torque", "N m");
     c.torque_lo     = r.double_attribute(f.get(), "/", "torque_lo", "N m");

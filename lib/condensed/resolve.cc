@@ -174,50 +174,33 @@ namespace gearfem::condensed
     return r;
   }
 
+  contact::ContactState CycleSolver::solve(const loading::SweepPoint &p, const contact::ContactSolution *)
+  {
+    Resolved r = resolve(p);
+    contact_ += r.state.t_contact;
+    post_ += r.result.t_post;
+    last_ = std::move(r.result);
+    return std::move(r.state);
+  }
+
+  Resolved CycleSolver::resolve(const loading::SweepPoint &p)
+  {
+    return resolver_.solve(resolver_.positions()[p.position_index], p.torque, options_);
+  }
+
   solve::SolveRunResult run_condensed(const CondensedCycle &cycle, const solve::GearContactInput &in,
                                       const solve::SolveRunOptions &options)
   {
     post::validate(options.post);
     const Resolver resolver(cycle, in);
-    solve::SolveRunResult run;
-    io::SolveResults &t = run.results;
-    t                   = solve::start_results(in, options.input_name, "gearfem solve --condensed");
-    const auto positions    = in.positions();
-    const auto &torques     = in.solve.torques;
-    const double z_ratio    = double(in.pair->gear(2).teeth()) / in.pair->gear(1).teeth();
-    const double face_width = std::min(in.material[0].thickness, in.material[1].thickness);
-    const std::size_t total = positions.size() * torques.size();
-    Progress progress(options.out, total, "position");
-    double t_contact = 0, t_post = 0;
-    const auto t_start = Clock::now();
-    for (std::size_t i = 0; i < total && run.failure.empty(); ++i)
-      {
-        const std::size_t ti = i / positions.size(), pi = i % positions.size();
-        try
-          {
-            const Resolved r = resolver.solve(resolver.positions()[pi], torques[ti], options.post);
-            solve::append_position(t, r.state, r.result, positions[pi].first, int(pi), z_ratio, face_width);
-            t_contact += r.state.t_contact, t_post += r.result.t_post;
-            ++run.solved;
-            // Progress only every tenth of the run: a line per millisecond position would
-            // cost more than the solve.
-            if (options.out && ((i + 1) % std::max<std::size_t>(1, total / 10) == 0 || i + 1 == total))
-              {
-                std::ostringstream d;
-                d << "T " << torques[ti] << " N m, STE " << std::setprecision(4) << r.result.ste * 1e6 << " um";
-                progress.step(i + 1, d.str());
-              }
-          }
-        catch (const SolverError &e)
-          {
-            run.failure = e.what();
-          }
-      }
-    run.unresolved = solve::count_unresolved(t, options.post.unresolved_share);
-    const auto t_out = Clock::now();
-    io::write_solve_results(t, options.output_dir);
-    run.seconds = {{"contact", t_contact}, {"post", t_post}, {"output", since(t_out)},
-                   {"total", since(t_start)}};
-    return run;
+    CycleSolver solver(resolver, options.post);
+    loading::SweepPlan plan;
+    plan.positions = in.positions();
+    plan.torques   = in.solve.torques;
+    solve::PointsSettings settings;
+    settings.program        = "gearfem solve --condensed";
+    settings.journal        = false;
+    settings.progress_every = 0; // a line per millisecond position would cost more than the solve
+    return solve::run_points(solver, in, plan, options, settings);
   }
 } // namespace gearfem::condensed

@@ -48,7 +48,7 @@ namespace gearfem::condensed
     Resolved solve(std::size_t k, double torque, const Eigen::VectorXd &offsets,
                    const post::PostOptions &options) const;
     /// The same with a drive advance per candidate [rad] (contact::solve_condensed; empty:
-    /// none): teeth turned rigidly by manufacturing deviations (tolerance/hunting.h).
+    /// none): teeth turned rigidly by manufacturing deviations (deviations/hunting.h).
     Resolved solve(std::size_t k, double torque, const Eigen::VectorXd &offsets, const Eigen::VectorXd &advance,
                    const post::PostOptions &options) const;
     /// Evaluate solution `cs` of stored configuration `p` of cycle position k at pinion torque
@@ -68,9 +68,40 @@ namespace gearfem::condensed
     fem::Elasticity material_[2];
   };
 
-  /// The `solve` run of `variant` on `cycle`: every torque x position, evaluated, with
-  /// progress, written to options.output_dir like solve::run_solve (also after a failure,
-  /// with the finished positions). No journal: a condensed run takes milliseconds.
+  /// The condensed backend of the one sweep of a solve (solve::run_points): point p is cycle
+  /// position resolver.positions()[p.position_index] of the variant at p.torque, re-solved and
+  /// evaluated at once (no warm start: each re-solve is exact on its own).
+  class CycleSolver : public post::PointSolver
+  {
+  public:
+    CycleSolver(const Resolver &resolver, const post::PostOptions &options)
+      : resolver_(resolver), options_(options)
+    {}
+    contact::ContactState solve(const loading::SweepPoint &p, const contact::ContactSolution *warm) override;
+    post::PositionResult evaluate(const loading::SweepPoint &, const contact::ContactState &, bool) override
+    {
+      return std::move(last_);
+    }
+    double seconds(const std::string &phase) const override
+    {
+      return phase == "contact" ? contact_ : phase == "post" ? post_ : 0.0;
+    }
+
+  protected:
+    /// The re-solve of point p; a subclass adds its own offsets (deviations/hunting.h).
+    virtual Resolved resolve(const loading::SweepPoint &p);
+    const Resolver &resolver_;
+    post::PostOptions options_;
+
+  private:
+    post::PositionResult last_;
+    double contact_ = 0, post_ = 0;
+  };
+
+  /// The `solve` run of `variant` on `cycle`: solve::run_points on a CycleSolver, every torque
+  /// x position, with progress, written to options.output_dir like solve::run_solve (also
+  /// after a failure, with the finished positions). No journal: a condensed run takes
+  /// milliseconds.
   solve::SolveRunResult run_condensed(const CondensedCycle &cycle, const solve::GearContactInput &variant,
                                       const solve::SolveRunOptions &options);
 } // namespace gearfem::condensed

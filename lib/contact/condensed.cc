@@ -58,6 +58,43 @@ namespace gearfem::contact
     return solve_impl(c, offset, Eigen::VectorXd(), Control::displacement, q, 0.0, max_active_set_iterations);
   }
 
+  CurvatureNewton curvature_newton(
+    const Eigen::VectorXd &a, const Eigen::VectorXd &curvature, const Eigen::VectorXd &ghat,
+    const Eigen::VectorXd &q_build, const Eigen::VectorXd &advance, double q, Eigen::VectorXd lambda0, bool fixed_q,
+    double tolerance, const std::string &what,
+    const std::function<NcpResult(const Eigen::VectorXd &, const Eigen::VectorXd &, double, const Eigen::VectorXd &)>
+      &step)
+  {
+    const Eigen::Index m      = a.size();
+    const Eigen::VectorXd adv = advance.size() ? advance : Eigen::VectorXd::Zero(m);
+    CurvatureNewton out;
+    std::vector<char> prev_active;
+    bool settled = false;
+    for (int it = 0; it < 30 && !settled; ++it)
+      {
+        // Linearise the curvature term about q: h(q') = h(q) + a(q) (q' - q).
+        // A candidate's rigid gap at q + s_k (s: drive advance, zero without deviations).
+        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q) - q_build + adv;
+        out.arm = a + curvature.cwiseProduct(dq);
+        const Eigen::VectorXd gl = ghat + a.cwiseProduct(Eigen::VectorXd::Constant(m, q) + adv) +
+                                   0.5 * curvature.cwiseProduct(dq.cwiseProduct(dq)) - out.arm * q;
+        out.ncp = step(out.arm, gl, q, lambda0);
+        out.iterations += out.ncp.iterations;
+        if (!out.ncp.ok)
+          throw SolverError(what + out.ncp.why);
+        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
+        settled = fixed_q || (it > 0 && out.ncp.active == prev_active &&
+                              std::abs(out.ncp.q - q) <= tolerance * std::abs(out.ncp.q) + q_floor);
+        prev_active = out.ncp.active;
+        lambda0     = out.ncp.lambda;
+        q           = out.ncp.q;
+      }
+    if (!settled)
+      throw SolverError(what + "the rotation did not settle in 30 curvature updates");
+    out.q = q;
+    return out;
+  }
+
   namespace
   {
   CondensedSolution solve_impl(const CondensedPosition &c, const Eigen::VectorXd &offset,
@@ -87,32 +124,16 @@ namespace gearfem::contact
     if (control == Control::load && c.load_build > 0)
       for (int k = 0; k < m; ++k)
         lambda0[k] = std::max(0.0, c.cand[k].point.force) * load / c.load_build;
-    NcpResult ncp;
-    std::vector<char> prev_active;
-    int iterations = 0;
-    bool settled   = false;
-    Eigen::VectorXd arm(m), ghat(m);
-    for (int it = 0; it < 30 && !settled; ++it)
-      {
-        // Linearise the curvature term about q: h(q') = h(q) + a(q) (q' - q).
-        // A candidate's rigid gap at q + s_k (s: drive advance, zero without deviations).
-        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(m, q - c.q_build) + adv;
-        arm  = c.a + c.curvature.cwiseProduct(dq);
-        ghat = c.ghat + o + c.a.cwiseProduct(Eigen::VectorXd::Constant(m, q) + adv) +
-               0.5 * c.curvature.cwiseProduct(dq.cwiseProduct(dq)) - arm * q;
-        ncp  = solve_ncp(c.W, c.D, arm, ghat, control, value, q, lambda0, max_active_set_iterations);
-        iterations += ncp.iterations;
-        if (!ncp.ok)
-          throw SolverError("condensed re-solve: " + ncp.why);
-        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
-        settled = control == Control::displacement ||
-                  (it > 0 && ncp.active == prev_active && std::abs(ncp.q - q) <= tolerance * std::abs(ncp.q) + q_floor);
-        prev_active = ncp.active;
-        lambda0     = ncp.lambda;
-        q           = ncp.q;
-      }
-    if (!settled)
-      throw SolverError("condensed re-solve: the rotation did not settle in 30 curvature updates");
+    const CurvatureNewton cn = curvature_newton(
+      c.a, c.curvature, c.ghat + o, Eigen::VectorXd::Constant(m, c.q_build), adv, q, lambda0,
+      control == Control::displacement, tolerance, "condensed re-solve: ",
+      [&](const Eigen::VectorXd &arm_, const Eigen::VectorXd &ghat_, double q_, const Eigen::VectorXd &lambda0_) {
+        return solve_ncp(c.W, c.D, arm_, ghat_, control, value, q_, lambda0_, max_active_set_iterations);
+      });
+    const NcpResult &ncp       = cn.ncp;
+    const Eigen::VectorXd &arm = cn.arm;
+    const int iterations       = cn.iterations;
+    q                          = cn.q;
     // The approach of each edge candidate beyond its build state (unmodified geometry).
     Eigen::VectorXd lambda_b(m);
     for (int k = 0; k < m; ++k)

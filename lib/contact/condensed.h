@@ -16,9 +16,13 @@
 // master projection with the load (second order in the elastic displacement; measured in
 // validation/condensed) and candidates outside the stored set (a re-solve whose contact reaches
 // the edge of the stored set fails with SolverError, CondensedPosition::edge).
+#include "contact/ncp.h"
 #include "contact/two_body.h"
 
 #include <Eigen/Dense>
+
+#include <functional>
+#include <string>
 
 #include <utility>
 #include <vector>
@@ -87,6 +91,28 @@ namespace gearfem::contact
   /// Move stored point `p` (pair frame at the build state) with body 1 turned by dq [rad] about
   /// its centre o1: the slave node when body 1 carries it, else the master point and normal.
   void turn_body1(ContactPoint &p, const Vec2 &o1, double dq);
+
+  /// The curvature Newton of a condensed re-solve, shared by the 2-D position and the coupled
+  /// helical slices (helical/slicing.h): candidate k's rigid gap at drive rotation q is
+  /// ghat_k + a_k (q + s_k) + curvature_k (q + s_k - q_k)^2 / 2 (q_k its build rotation, s_k
+  /// its drive advance; `advance` empty: none), linearised about the current q, and the
+  /// complementarity problem `step(arm, linearised ghat, q, lambda0)` solved at each update
+  /// until the active set repeats and q moves by at most `tolerance` relative (one update
+  /// with `fixed_q`, rotation control). `what` prefixes the SolverError of a failed step or of
+  /// a rotation that does not settle in 30 updates.
+  struct CurvatureNewton
+  {
+    NcpResult ncp;       ///< the last complementarity solve
+    Eigen::VectorXd arm; ///< its arms
+    double q = 0;        ///< the settled rotation
+    int iterations = 0;  ///< active-set iterations of all updates
+  };
+  CurvatureNewton curvature_newton(
+    const Eigen::VectorXd &a, const Eigen::VectorXd &curvature, const Eigen::VectorXd &ghat,
+    const Eigen::VectorXd &q_build, const Eigen::VectorXd &advance, double q, Eigen::VectorXd lambda0, bool fixed_q,
+    double tolerance, const std::string &what,
+    const std::function<NcpResult(const Eigen::VectorXd &, const Eigen::VectorXd &, double, const Eigen::VectorXd &)>
+      &step);
 
   /// Solve position `c` at generalised force `load` (torque control, > 0) with the gap
   /// modifications `offset` (one per candidate, o_k [m]; empty: none). Newton on q over the

@@ -12,7 +12,7 @@ namespace gearfem::fem
     prm.enter_subsection("Finite elements");
     prm.declare_entry("Degree", "2", dealii::Patterns::Integer(),
                       "p of FE_Q(p)^2 and MappingQ(p). Units: none. Allowed: 1 or 2.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("Linear solver", "automatic", dealii::Patterns::Selection("automatic|mumps|umfpack"),
                       "Direct solver: MUMPS through PETSc, UMFPACK, or automatic (UMFPACK up to "
                       "the UMFPACK limit, MUMPS above).");

@@ -107,8 +107,6 @@ namespace gearfem::helical
     const auto &pair = *in.pair;
     run.eps_alpha    = pair.contact_ratio();
     run.eps_gamma    = run.eps_alpha + run.helix.overlap_ratio;
-    const double tmin = *std::min_element(run.torques.begin(), run.torques.end());
-    const double tmax = *std::max_element(run.torques.begin(), run.torques.end());
     condensed::CondensedCycle cycle;
     if (!ro.cycle_file.empty())
       {
@@ -123,15 +121,17 @@ namespace gearfem::helical
     else
       {
         const auto t0   = Clock::now();
-        const double T  = ro.build_torque > 0 ? ro.build_torque : tmax;
-        const double lo = ro.torque_lo > 0 ? ro.torque_lo : std::min(tmin / 8, T);
-        const double hi = ro.torque_hi > 0 ? ro.torque_hi : std::max(4 * tmax, T);
+        condensed::CycleRange range = condensed::cycle_range(run.torques, condensed::CycleUse::slices, ro.build_torque);
+        if (ro.torque_lo > 0)
+          range.lo = ro.torque_lo;
+        if (ro.torque_hi > 0)
+          range.hi = ro.torque_hi;
         auto model      = in.model();
         if (ro.out)
           *ro.out << "transverse section: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3)
                   << model->setup_seconds() << " s; condensing " << in.positions().size()
-                  << " sections for torques " << lo << " to " << hi << " N m\n";
-        cycle = condensed::build_cycle(*model, in, T, lo, hi, ro.out, ro.scene_ratio);
+                  << " sections for torques " << range.lo << " to " << range.hi << " N m\n";
+        cycle = condensed::cycle_for(*model, in, range, {ro.scene_ratio, ro.out});
         run.setup_seconds = model->setup_seconds();
         run.build_seconds = since(t0);
         if (!ro.write_cycle.empty())

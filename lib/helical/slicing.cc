@@ -267,31 +267,17 @@ namespace gearfem::helical
   int SlicedPair::rotate(System &s, const std::vector<Sub> &sub, double torque, double q) const
   {
     // Newton on the curvature of the rigid gaps, the complementarity problem at each step.
+    // The shared curvature Newton of the condensed re-solve, on the coupled operator.
     SlicedOperator op(s, sub);
-    std::vector<char> prev;
-    bool settled    = false;
-    int iterations  = 0;
-    Eigen::VectorXd lambda0 = s.lambda0;
-    for (int it = 0; it < 30 && !settled; ++it)
-      {
-        const Eigen::VectorXd dq = Eigen::VectorXd::Constant(s.m, q) - s.q_build;
-        s.arm = s.a + s.curvature.cwiseProduct(dq);
-        const Eigen::VectorXd gl = s.ghat + s.a * q + 0.5 * s.curvature.cwiseProduct(dq.cwiseProduct(dq)) - s.arm * q;
-        s.solution = contact::solve_ncp_spd(op, s.arm, gl, torque, lambda0, 400);
-        iterations += s.solution.iterations;
-        if (!s.solution.ok)
-          throw SolverError(s.solution.why);
-        constexpr double q_floor = 8 * std::numeric_limits<double>::epsilon();
-        settled = it > 0 && s.solution.active == prev &&
-                  std::abs(s.solution.q - q) <= 1e-10 * std::abs(s.solution.q) + q_floor;
-        prev    = s.solution.active;
-        lambda0 = s.solution.lambda;
-        q       = s.solution.q;
-      }
-    if (!settled)
-      throw SolverError("the rotation did not settle in 30 curvature updates");
-    s.q = q;
-    return iterations;
+    contact::CurvatureNewton cn = contact::curvature_newton(
+      s.a, s.curvature, s.ghat, s.q_build, Eigen::VectorXd(), q, s.lambda0, false, 1e-10, "",
+      [&](const Eigen::VectorXd &arm, const Eigen::VectorXd &gl, double, const Eigen::VectorXd &lambda0) {
+        return contact::solve_ncp_spd(op, arm, gl, torque, lambda0, 400);
+      });
+    s.arm      = std::move(cn.arm);
+    s.solution = std::move(cn.ncp);
+    s.q        = cn.q;
+    return cn.iterations;
   }
 
   bool SlicedPair::rescene(std::vector<Sub> &sub, const System &s) const

@@ -69,8 +69,22 @@ namespace gearfem::loading
     return s;
   }
 
+  contact::ContactState ModelSolver::solve(const SweepPoint &p, const contact::ContactSolution *warm)
+  {
+    if (!friction_.empty())
+      model_.contact_solver().set_friction(friction_.at(p.torque_index));
+    return model_.solve(p.phi1, p.torque, warm);
+  }
+
   SweepOutcome run_sweep(contact::GearContactModel &model, const SweepPlan &plan,
                          const std::vector<SweepObserver *> &observers, const SweepStart &start)
+  {
+    ModelSolver solver(model, plan.friction);
+    return run_sweep(solver, plan, observers, start);
+  }
+
+  SweepOutcome run_sweep(PositionSolver &solver, const SweepPlan &plan, const std::vector<SweepObserver *> &observers,
+                         const SweepStart &start)
   {
     SweepOutcome outcome;
     const std::size_t np = plan.positions.size(), total = plan.size();
@@ -91,12 +105,10 @@ namespace gearfem::loading
         p.phi1   = plan.positions[p.position_index].second;
         if (p.position_index == 0)
           have_prev = false; // each torque starts cold, from the first position
-        if (!plan.friction.empty())
-          model.contact_solver().set_friction(plan.friction.at(p.torque_index));
         contact::ContactState s;
         try
           {
-            s = model.solve(p.phi1, p.torque, have_prev ? &prev : nullptr);
+            s = solver.solve(p, have_prev ? &prev : nullptr);
           }
         catch (const SolverError &e)
           {

@@ -68,9 +68,41 @@ namespace gearfem::loading
   /// Throws InputError if `v` is not a packed warm start.
   contact::ContactSolution unpack_warm_start(const std::vector<double> &v);
 
-  /// Run the plan from `start`. A SolverError at a point stops the sweep and is returned in
-  /// the outcome (the finished points have reached the observers); other exceptions
-  /// propagate.
+  /// What solves the points of a sweep: the FE model (ModelSolver), or a condensed cycle's
+  /// re-solve (condensed/resolve.h: CycleSolver), behind the one sweep loop run_sweep.
+  class PositionSolver
+  {
+  public:
+    virtual ~PositionSolver() = default;
+    /// The converged state of point p from `warm`, the solution of the previous point of the
+    /// same torque (null: a cold start; a backend without warm starts ignores it). Throws
+    /// SolverError when the point does not converge.
+    virtual contact::ContactState solve(const SweepPoint &p, const contact::ContactSolution *warm) = 0;
+  };
+
+  /// The FE backend: GearContactModel::solve, with the friction coefficient of each torque of
+  /// `friction` (SweepPlan::friction; empty: the model's own).
+  class ModelSolver : public PositionSolver
+  {
+  public:
+    explicit ModelSolver(contact::GearContactModel &model, std::vector<double> friction = {})
+      : model_(model), friction_(std::move(friction))
+    {}
+    contact::ContactState solve(const SweepPoint &p, const contact::ContactSolution *warm) override;
+    contact::GearContactModel &model() const { return model_; }
+
+  private:
+    contact::GearContactModel &model_;
+    std::vector<double> friction_;
+  };
+
+  /// The one sweep loop: run the plan from `start` on `solver`, each torque's positions warm
+  /// started from the previous one (cold at its first), every converged point handed to the
+  /// observers in order. A SolverError at a point stops the sweep and is returned in the
+  /// outcome (the finished points have reached the observers); other exceptions propagate.
+  SweepOutcome run_sweep(PositionSolver &solver, const SweepPlan &plan, const std::vector<SweepObserver *> &observers,
+                         const SweepStart &start = SweepStart());
+  /// The same on the FE model (ModelSolver with the plan's friction coefficients).
   SweepOutcome run_sweep(contact::GearContactModel &model, const SweepPlan &plan,
                          const std::vector<SweepObserver *> &observers,
                          const SweepStart &start = SweepStart());

@@ -131,7 +131,7 @@ namespace gearfem::mesh
     std::string model_name = "gearfem";
     /// When Blossom recombination leaves triangles, also on the mesh graded to short pieces
     /// (mesh_domain): retry, then subdivide (true), or throw RecombinationFailed (false: a
-    /// caller that can try other sizes, choice/).
+    /// caller that can try other sizes, model_choice/).
     bool fallbacks = true;
     /// When the first recombination leaves triangles and the outline has short pieces, mesh
     /// again with the size field graded to them (mesh_domain) before the retries; false: go

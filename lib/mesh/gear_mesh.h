@@ -49,7 +49,7 @@ namespace gearfem::mesh
     bool tiled = false;
     /// Not a `Mesh` entry: false makes a failed first quad recombination throw
     /// RecombinationFailed instead of the slow retries and the subdivision fallback
-    /// (MeshingOptions::fallbacks), so that the model choice tries other sizes (choice/).
+    /// (MeshingOptions::fallbacks), so that the model choice tries other sizes (model_choice/).
     bool quad_fallbacks = true;
     /// Extra placement angles delta_k [rad] of the teeth, counter-clockwise: tooth k (0 <= k < z)
     /// stands at 2 pi k / z + delta_k (a pitch deviation built into the geometry). Empty: every

@@ -21,7 +21,7 @@ namespace gearfem::mesh
     prm.declare_entry("Model", "full gear", Selection("full gear|sector"),
                       "Full gear (all z teeth, bore) or a sector of N teeth with a rim below the "
                       "root circle and radial cut edges (the 3-tooth model of Siasos 2010).",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("Sector teeth", "3", Integer(),
                       "N, teeth of a sector model. Units: none. Allowed: >= 1 (>= 3 for a contact "
                       "model: solve, batch, optimise, gearbox).");
@@ -29,7 +29,7 @@ namespace gearfem::mesh
                       "Element size on the drive flanks (and tip) of the fine teeth; 0: m_n/30 "
                       "(0.1 mm at m 3: six nodes across a Hertz patch, STE ripple below 0.1 %, "
                       "see docs/contact.md). Units: mm. Allowed: >= 0 and <= h_body.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("h_coast", "0", Double(),
                       "Element size on the coast flanks (and coast tip rounding) of the fine "
                       "teeth, which carry no load in a drive-side analysis; 0: h_fillet. Units: mm. "
@@ -41,16 +41,16 @@ namespace gearfem::mesh
                       "(STE converged to 0.5 % between h_contact 0.1 and 0.05 mm at the corner "
                       "positions, docs/contact.md); >= h_contact: no grading. Units: mm. "
                       "Allowed: 0 or >= h_contact/50.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("h_fillet", "0.25", Double(),
                       "Element size on the fillets and root of the fine teeth. Units: mm. "
                       "Allowed: > 0 and <= h_body.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("h_body", "3", Double(), "Largest element size inside the body. Units: mm. Allowed: > 0.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("h_tooth", "0", Double(),
                       "Element size on the outline of the other teeth; 0: min(h_body, 0.4 m). Units: mm.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     prm.declare_entry("Growth ratio", "1.2", Double(),
                       "Bound on the size ratio of neighbouring elements away from the fine "
                       "boundaries. Units: none. Allowed: > 1.");
@@ -67,7 +67,7 @@ namespace gearfem::mesh
                       "join on radial cuts with one fixed node distribution; where the tiles do not "
                       "join, the whole gear is meshed as usual. Solve/Target tiles unless this "
                       "entry is set. Units: none.",
-                      true /* has_to_be_set: tells a set entry from a default (choice/parameters.h) */);
+                      true /* has_to_be_set: tells a set entry from a default (model_choice/parameters.h) */);
     for (const char *g : {"Gear 1", "Gear 2"})
       {
         prm.enter_subsection(g);

@@ -211,13 +211,12 @@ namespace gearfem::optimise
       {
         std::vector<double> T = problem_.torques;
         T.insert(T.end(), problem_.check_torques.begin(), problem_.check_torques.end());
-        const double lo = *std::min_element(T.begin(), T.end()), hi = *std::max_element(T.begin(), T.end());
         std::vector<std::pair<std::string, double>> named;
         for (const double phi : positions_)
           named.emplace_back("", phi);
         model_->set_micro_geometry(*base_pair_);
         cycle_ = std::make_unique<condensed::CondensedCycle>(
-          condensed::build_cycle(*model_, named, std::sqrt(lo * hi), lo, hi));
+          condensed::cycle_for(*model_, named, condensed::cycle_range(T, condensed::CycleUse::given_torques)));
       }
   }
 

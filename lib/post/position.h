@@ -128,6 +128,7 @@ namespace gearfem::post
     const contact::GearContactModel &model() const { return model_; }
     const PostOptions &options() const { return options_; }
     dealii::TimerOutput &timer() { return timer_; }
+    const dealii::TimerOutput &timer() const { return timer_; }
 
   private:
     const contact::GearContactModel &model_;

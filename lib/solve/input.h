@@ -55,11 +55,11 @@ namespace gearfem::solve
     /// stress and p_max at sample positions on a model with the fine mesh sizes halved
     /// (post/error_estimate.h).
     bool error_estimate = false;
-    /// `Target`: the accuracy the run asks for (choice/target.h parses it; "none": the mesh
+    /// `Target`: the accuracy the run asks for (model_choice/target.h parses it; "none": the mesh
     /// as given), and `Cost cap` [s] of the automatic choice (0: none).
     std::string target = "none";
     double cost_cap    = 1800;
-    /// `Target route`: auto (the condensed cycle where it pays, choice/route.h) or full FE.
+    /// `Target route`: auto (the condensed cycle where it pays, model_choice/route.h) or full FE.
     bool target_route_auto = true;
   };
 

@@ -95,9 +95,9 @@ namespace gearfem::solve
     class VtuObserver : public PositionObserver
     {
     public:
-      VtuObserver(const contact::GearContactModel &model, const solve::SolveParameters &sp,
-                  std::set<std::size_t> named, std::filesystem::path dir)
-        : model_(model), sp_(sp), named_(std::move(named)), dir_(std::move(dir))
+      VtuObserver(const post::PointSolver &solver, const solve::SolveParameters &sp, std::set<std::size_t> named,
+                  std::filesystem::path dir)
+        : solver_(solver), sp_(sp), named_(std::move(named)), dir_(std::move(dir))
       {}
       bool wants_fields(const loading::SweepPoint &p) const override
       {
@@ -110,7 +110,7 @@ namespace gearfem::solve
         if (!wants_fields(p))
           return;
         last_file = vtu_name(p.torque, p.position_index);
-        post::write_vtu(model_, s, r, dir_ / last_file, sp_.vtu_scale);
+        post::write_vtu(*solver_.field_model(), s, r, dir_ / last_file, sp_.vtu_scale);
         pvd[p.torque].emplace_back(p.phi1 / units::deg, last_file);
         r.u[0].reinit(0), r.u[1].reinit(0);
       }
@@ -118,7 +118,7 @@ namespace gearfem::solve
       std::string last_file;
 
     private:
-      const contact::GearContactModel &model_;
+      const post::PointSolver &solver_;
       const solve::SolveParameters &sp_;
       std::set<std::size_t> named_;
       std::filesystem::path dir_;
@@ -149,11 +149,16 @@ namespace gearfem::solve
     class ProgressObserver : public PositionObserver
     {
     public:
-      ProgressObserver(std::ostream *out, std::size_t total, std::size_t done)
+      /// A line every `every` points (0: every tenth of the run), and at the last.
+      ProgressObserver(std::ostream *out, std::size_t total, std::size_t done, std::size_t every)
         : progress_(out, total, "position", done)
+        , out_(out)
+        , every_(every > 0 ? every : std::max<std::size_t>(1, total / 10))
       {}
       void finished(const loading::SweepPoint &p, const contact::ContactState &s, PositionResult &r) override
       {
+        if (!out_ || ((p.index + 1) % every_ != 0 && p.index + 1 != p.total))
+          return;
         std::ostringstream d;
         d << "T " << p.torque << " N m, roll " << std::fixed << std::setprecision(3) << p.phi1 / units::deg << " deg"
           << (p.name.empty() ? "" : " (" + p.name + ")") << ", STE " << std::setprecision(3) << r.ste * 1e6
@@ -163,31 +168,31 @@ namespace gearfem::solve
 
     private:
       Progress progress_;
+      std::ostream *out_;
+      std::size_t every_;
     };
 
     /// Calls SolveRunOptions::torque_done after the last position of each torque but the last.
     class TorqueDoneObserver : public PositionObserver
     {
     public:
-      TorqueDoneObserver(const SolveRunOptions &options, const io::SolveResults &t,
-                         const contact::GearContactModel &model, std::size_t n_positions, double contact_before)
-        : options_(options), t_(t), model_(model), n_positions_(n_positions), contact_before_(contact_before)
+      TorqueDoneObserver(const SolveRunOptions &options, const io::SolveResults &t, const post::PointSolver &solver,
+                         std::size_t n_positions)
+        : options_(options), t_(t), solver_(solver), n_positions_(n_positions)
       {}
       void finished(const loading::SweepPoint &p, const contact::ContactState &, PositionResult &) override
       {
         if (!options_.torque_done || p.position_index + 1 != n_positions_ || p.index + 1 == p.total)
           return;
-        const double seconds = contact::section_seconds(model_.timer(), "contact") - contact_before_;
-        stop_ = !options_.torque_done(p.torque_index, t_.sweep, seconds);
+        stop_ = !options_.torque_done(p.torque_index, t_.sweep, solver_.seconds("contact"));
       }
       bool stop_requested() const override { return stop_; }
 
     private:
       const SolveRunOptions &options_;
       const io::SolveResults &t_;
-      const contact::GearContactModel &model_;
+      const post::PointSolver &solver_;
       std::size_t n_positions_;
-      double contact_before_;
       bool stop_ = false;
     };
 
@@ -292,24 +297,46 @@ namespace gearfem::solve
     return t;
   }
 
-  SolveRunResult run_solve(contact::GearContactModel &model, const solve::GearContactInput &in,
-                           const SolveRunOptions &options)
+  loading::SweepPlan solve_plan(const GearContactInput &in)
   {
-    validate(options.post);
-    post::PostOptions post_options = options.post;
-    post_options.pinion_speed      = in.friction.pinion_speed;
-    // Root stresses and reactions from influence coefficients (fields only for VTU).
-    model.observe_root_stress();
-    const double contact_before = contact::section_seconds(model.timer(), "contact");
-    const auto &pair = in.meshing();
     loading::SweepPlan plan;
     plan.positions = in.positions();
     plan.torques   = in.solve.torques;
     plan.friction  = in.friction_coefficients(plan.torques);
+    return plan;
+  }
 
+  namespace
+  {
+    /// The journal of a run: resumed into the tables (and the VTU records), or started afresh.
+    loading::SweepStart start_journal(const SolveRunOptions &options, const std::filesystem::path &journal,
+                                      const io::JournalHeader &header, io::SolveResults &t, VtuObserver &vtu,
+                                      const loading::SweepPlan &plan)
+    {
+      loading::SweepStart start;
+      if (options.resume && std::filesystem::exists(journal))
+        start = resume_from(journal, header, t, vtu, plan.positions, plan.torques);
+      else
+        {
+          if (options.out && std::filesystem::exists(journal))
+            *options.out << "note: " << journal.string() << " holds an interrupted run; starting afresh "
+                         << "(--resume continues it)" << std::endl;
+          io::start_journal(journal, header);
+        }
+      if (options.out && start.next > 0)
+        *options.out << "resuming: " << start.next << " of " << plan.size() << " positions from "
+                     << journal.string() << std::endl;
+      return start;
+    }
+  } // namespace
+
+  SolveRunResult run_points(post::PointSolver &solver, const GearContactInput &in, const loading::SweepPlan &plan,
+                            const SolveRunOptions &options, const PointsSettings &settings)
+  {
+    validate(options.post);
     SolveRunResult run;
     io::SolveResults &t = run.results;
-    t                   = start_results(in, options.input_name);
+    t                   = start_results(in, options.input_name, settings.program);
     if (in.contact.friction > 0 || in.friction.law != analytical::friction::Law::constant)
       {
         std::ostringstream mu;
@@ -319,56 +346,70 @@ namespace gearfem::solve
         t.attributes["friction_coefficients"] = mu.str(); // per torque, in the order of Solve/Torques
         run.friction = plan.friction;
       }
-
-    const double z_ratio    = pair.ratio();
-    const double face_width = std::min(in.material[0].thickness, in.material[1].thickness);
-    TablesObserver tables(t, z_ratio, face_width);
-    VtuObserver vtu(model, in.solve, named_vtu_positions(in, plan.positions), options.output_dir);
-    const auto journal = options.output_dir / journal_file;
+    const bool tables  = settings.tables;
+    const bool write   = tables && !options.output_dir.empty(); // no folder: the tables in memory only
+    const bool journal = write && settings.journal;
+    TablesObserver table_rows(t, in.meshing().ratio(), std::min(in.material[0].thickness, in.material[1].thickness));
+    VtuObserver vtu(solver, in.solve, named_vtu_positions(in, plan.positions), options.output_dir);
+    const auto journal_path = options.output_dir / journal_file;
     const io::JournalHeader header{"solve", options.input_hash, plan.size()};
-    loading::SweepStart start;
-    if (options.resume && std::filesystem::exists(journal))
-      start = resume_from(journal, header, t, vtu, plan.positions, plan.torques);
-    else
-      {
-        if (options.out && std::filesystem::exists(journal))
-          *options.out << "note: " << journal.string() << " holds an interrupted run; starting afresh "
-                       << "(--resume continues it)" << std::endl;
-        io::start_journal(journal, header);
-      }
+    const loading::SweepStart start =
+      journal ? start_journal(options, journal_path, header, t, vtu, plan) : loading::SweepStart();
     run.resumed = start.next;
-    if (options.out && run.resumed > 0)
-      *options.out << "resuming: " << run.resumed << " of " << plan.size() << " positions from " << journal.string()
-                   << std::endl;
 
-    JournalObserver journal_observer(journal, tables, vtu);
-    ProgressObserver progress(options.out, plan.size(), start.next);
-    Evaluator evaluator(model, post_options);
-    TorqueDoneObserver torque_done(options, t, model, plan.positions.size(), contact_before);
-    EvaluatingObserver evaluate(evaluator, {&tables, &vtu, &journal_observer, &progress, &torque_done});
-    const auto outcome = loading::run_sweep(model, plan, {&evaluate}, start);
-    run.solved     = outcome.finished;
-    run.stopped    = outcome.stopped;
+    JournalObserver journal_observer(journal_path, table_rows, vtu);
+    ProgressObserver progress(options.out, plan.size(), start.next, settings.progress_every);
+    TorqueDoneObserver torque_done(options, t, solver, plan.positions.size());
+    std::vector<PositionObserver *> observers;
+    if (tables)
+      observers.push_back(&table_rows);
+    if (write && solver.has_fields())
+      observers.push_back(&vtu);
+    if (journal)
+      observers.push_back(&journal_observer);
+    observers.push_back(&progress);
+    observers.push_back(&torque_done);
+    observers.insert(observers.end(), settings.observers.begin(), settings.observers.end());
+    dealii::TimerOutput output_timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    EvaluatingObserver evaluate(solver, output_timer, observers);
+    const auto outcome = loading::run_sweep(solver, plan, {&evaluate}, start);
+    run.solved       = outcome.finished;
+    run.stopped      = outcome.stopped;
     run.pinion_speed = in.friction.pinion_speed;
-    run.failure    = outcome.failure;
-    run.unresolved = count_unresolved(t, options.post.unresolved_share);
-
-    dealii::TimerOutput::Scope scope(evaluator.timer(), "output");
-    io::write_solve_results(t, options.output_dir);
-    for (const auto &[T, records] : vtu.pvd)
-      if (!records.empty())
-        {
-          std::ostringstream n;
-          n << "pair_T" << T << ".pvd";
-          fem::write_pvd(options.output_dir / n.str(), records);
-        }
-    if (run.failure.empty())
-      std::filesystem::remove(journal); // complete or stopped by the caller: nothing to resume
-    scope.stop();
-    run.seconds = {{"contact", contact::section_seconds(model.timer(), "contact") - contact_before},
-                   {"post", contact::section_seconds(evaluator.timer(), "post")},
-                   {"output", contact::section_seconds(evaluator.timer(), "output")}};
+    run.failure      = outcome.failure;
+    if (tables)
+      run.unresolved = count_unresolved(t, options.post.unresolved_share);
+    if (write)
+      {
+        dealii::TimerOutput::Scope scope(output_timer, "output");
+        io::write_solve_results(t, options.output_dir);
+        for (const auto &[T, records] : vtu.pvd)
+          if (!records.empty())
+            {
+              std::ostringstream n;
+              n << "pair_T" << T << ".pvd";
+              fem::write_pvd(options.output_dir / n.str(), records);
+            }
+        if (journal && run.failure.empty())
+          std::filesystem::remove(journal_path); // complete or stopped by the caller: nothing to resume
+      }
+    run.seconds = {{"contact", solver.seconds("contact")},
+                   {"post", solver.seconds("post")},
+                   {"output", contact::section_seconds(output_timer, "output")}};
     return run;
+  }
+
+  SolveRunResult run_solve(contact::GearContactModel &model, const solve::GearContactInput &in,
+                           const SolveRunOptions &options)
+  {
+    validate(options.post);
+    post::PostOptions post_options = options.post;
+    post_options.pinion_speed      = in.friction.pinion_speed;
+    // Root stresses and reactions from influence coefficients (fields only for VTU).
+    model.observe_root_stress();
+    const loading::SweepPlan plan = solve_plan(in);
+    post::FeSolver solver(model, post_options, plan.friction);
+    return run_points(solver, in, plan, options);
   }
 
   std::string friction_table(const SolveRunResult &run, const geometry::MeshingPair &pair,

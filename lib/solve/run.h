@@ -8,6 +8,8 @@
 // Used by `gearfem solve`; callable by a batch driver or an optimiser without CLI code.
 #include "solve/input.h"
 #include "io/solve_results.h"
+#include "loading/sweep.h"
+#include "post/observers.h"
 #include "post/position.h"
 
 #include <filesystem>
@@ -72,7 +74,32 @@ namespace gearfem::solve
   /// load share above `min_share`, not edge contact), per torque.
   std::map<double, int> count_unresolved(const io::SolveResults &t, double min_share);
 
-  /// Run the sweep of `in` on `model` and write the results (docs/output-format.md).
+  /// How run_points runs a plan, beside SolveRunOptions.
+  struct PointsSettings
+  {
+    std::string program = "gearfem solve"; ///< the results' `program` attribute
+    /// A checkpoint journal after every point (SolveRunOptions::resume); off where a point
+    /// takes a millisecond.
+    bool journal = true;
+    /// A progress line every `progress_every` points (0: every tenth of the run).
+    std::size_t progress_every = 1;
+    /// false: no tables, no journal, nothing written (the observers below see every point).
+    bool tables = true;
+    std::vector<post::PositionObserver *> observers; ///< after the run's own
+  };
+
+  /// The plan of `in`: its positions, its torques and the friction coefficient of each torque.
+  loading::SweepPlan solve_plan(const GearContactInput &in);
+
+  /// The one sweep of a solve: `plan` on `solver` (loading::run_sweep), each point evaluated by
+  /// the solver, its rows appended to the results tables, VTU files (where the solver keeps
+  /// fields), the checkpoint journal, progress with i/N and ETA, SolveRunOptions::torque_done;
+  /// the results written at the end, also after a failure (docs/output-format.md). run_solve,
+  /// condensed::run_condensed and deviations::run_hunting are this call on their backends.
+  SolveRunResult run_points(post::PointSolver &solver, const GearContactInput &in, const loading::SweepPlan &plan,
+                            const SolveRunOptions &options, const PointsSettings &settings = {});
+
+  /// Run the sweep of `in` on `model` (post::FeSolver) and write the results.
   SolveRunResult run_solve(contact::GearContactModel &model, const solve::GearContactInput &in,
                            const SolveRunOptions &options);
 

@@ -27,6 +27,11 @@
 #                                            limit (10 s) are failed jobs naming the signal or the limit;
 #                                            the others finish, equal to a run without the fault
 #                                            and to Job isolation = none, the merge runs, exit 4
+#   batch_checks.sh routes  GEARFEM SRC_DIR  designs that carry Solve/Target or a Deviations grade
+#                                            take route::run's route (job.txt route target /
+#                                            hunting, record.json "route"), the plain design the
+#                                            full FE; each equals `gearfem solve` of its design.prm
+#                                            to 1e-9 of each column's scale (the same library call)
 #   batch_checks.sh bad     GEARFEM SRC_DIR  unknown parameter path, malformed row, value that
 #                                            is not a number: exit 2 naming column and row,
 #                                            before any job (no jobs folder), also under mpirun
@@ -342,6 +347,32 @@ for run, bad, words in (("segv", "shift", ("crashed", ("SIGSEGV", "SIGABRT"))), 
 print("segv, abort (np 2) and hang: one failed job each naming the fault; the others equal the clean run")
 PY
     grep -q "1 failed" "$work/segv.log" || fail "segv: the summary does not count one failure"
+    ;;
+  routes)
+    study routes.csv
+    "$gearfem" batch "$work/study.prm" --output-dir "$work/b" > "$work/b.log" 2>&1 ||
+      { cat "$work/b.log"; fail "batch with Target and Deviations designs failed"; }
+    # Each design written by hand: the study with the design's values appended (a later `set`
+    # overrides an earlier one; design.prm lists every entry, defaults included, so a Target
+    # run on it would take the listed Mesh and FE entries as set by the user).
+    printf '' > "$work/plain.add"
+    printf 'subsection Solve\n  set Target = mean STE 5\nend\n' > "$work/target.add"
+    printf 'subsection Deviations\n  set Accuracy grade = 6\nend\n' > "$work/graded.add"
+    for d in plain:full target:target graded:hunting; do
+      id=${d%%:*} route=${d##*:}
+      grep -q '^status ok$' "$work/b/jobs/$id/job.txt" || { cat "$work/b/jobs/$id/job.txt"; fail "design $id failed"; }
+      grep -q "^route $route\$" "$work/b/jobs/$id/job.txt" || { cat "$work/b/jobs/$id/job.txt"; fail "design $id: route not $route"; }
+      cat "$work/study.prm" "$work/$id.add" > "$work/$id.prm"
+      "$gearfem" solve "$work/$id.prm" --output-dir "$work/s_$id" > "$work/s_$id.log" 2>&1 ||
+        { cat "$work/s_$id.log"; fail "gearfem solve of design $id failed"; }
+      TOL=1e-9 /usr/bin/python3 "$src/tests/regression/compare_outputs.py" "$work/s_$id" "$work/b/jobs/$id" sweep.csv pairs.csv ||
+        fail "design $id: batch and solve differ"
+    done
+    grep -q '"route": {"name": "Solve/Target"' "$work/b/jobs/target/record.json" || fail "record.json of the Target design"
+    grep -q '"model_choice"' "$work/b/jobs/target/record.json" || fail "no model_choice member for the Target design"
+    grep -q '"name": "hunting cycle' "$work/b/jobs/graded/record.json" || fail "record.json of the Deviations design"
+    [ -f "$work/b/jobs/graded/spectrum.csv" ] || fail "the Deviations design wrote no spectrum.csv"
+    echo "routes: OK"
     ;;
   bad)
     check() { # TABLE EXPECT...: exit 2, each EXPECT in stderr, no job started

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""The allowed include directions between the modules of lib/ (docs/architecture.md).
+"""The allowed include directions between the modules of lib/, read from the module table of
+docs/architecture.md (the one source of the layering).
 
     include_rules.py SOURCE_DIR
 
@@ -11,48 +12,61 @@ separate *_params target and may use deal.II in their .cc only.
 """
 import os, re, sys
 
-# module -> modules it may include (besides itself). Data flows one way:
-# geometry -> mesh -> fem -> contact -> loading -> post -> solve, with analytical/rating
-# beside the FE chain, calibration and dynamics above the tables, the studies above solve.
-light_base = {'base'}
-ALLOWED = {
-    'base': set(),
-    'params': {'base'},
-    'io': {'base'},
-    'geometry': {'base', 'params'},
-    'analytical': {'base', 'params', 'geometry'},
-    'rating': {'base', 'params', 'geometry', 'analytical'},
-    'calibration': {'base', 'params', 'geometry', 'analytical', 'io'},
-    'dynamics': {'base', 'params', 'geometry', 'analytical', 'io'},
-    'mesh': {'base', 'params', 'geometry'},
-    'fem': {'base', 'params', 'geometry', 'mesh'},
-    'contact': {'base', 'params', 'geometry', 'mesh', 'fem'},
-    'loading': {'base', 'params', 'geometry', 'mesh', 'fem', 'contact'},
-    'post': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading'},
-    'solve': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post'},
-    'choice': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve',
-               'condensed'},
-    'condensed': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'mesh', 'fem', 'contact',
-                  'loading', 'post', 'solve'},
-    'optimise': {'base', 'params', 'io', 'geometry', 'analytical', 'mesh', 'fem', 'contact', 'loading', 'post',
-                 'solve', 'condensed'},
-    'gearbox': {'base', 'params', 'io', 'geometry', 'analytical', 'rating', 'solve'},
-    'batch': {'base', 'params', 'io', 'geometry', 'mesh', 'fem', 'contact', 'loading', 'post', 'solve', 'condensed'},
-    'tolerance': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'dynamics', 'mesh', 'fem',
-                  'contact', 'loading', 'post', 'solve', 'condensed'},
-    'helical': {'base', 'params', 'io', 'geometry', 'analytical', 'calibration', 'mesh', 'fem', 'contact',
-                'loading', 'post', 'solve', 'condensed'},
-    'exchange': {'base', 'params', 'io'},
-    'commands': None,  # wires everything together
-}
+def read_layering(source_dir):
+    """module -> (modules it may include, {part prefix: modules allowed only in that part}),
+    from the module table of docs/architecture.md (its last column; transitive; None for
+    "everything"). A cell "a, b; relief: c" allows c only in lib/<module>/relief*, a cell part
+    "gearbox/fe: c" only under lib/gearbox/fe/."""
+    direct, parts = {}, {}
+    for line in open(os.path.join(source_dir, 'docs', 'architecture.md'), encoding='utf-8'):
+        m = re.match(r'^\| `([a-z_]+)` \|.*\| ([^|]*) \|\s*$', line)
+        if not m:
+            continue
+        module, cell = m.group(1), m.group(2).strip()
+        if cell == 'everything':
+            direct[module] = None
+            continue
+        chunks = [c.strip() for c in cell.split(';')]
+        names = lambda text: {w.strip().split(' ')[0] for w in text.split(',') if w.strip() not in ('', '—')}
+        direct[module] = names(chunks[0]) if chunks[0] != '—' else set()
+        parts[module] = {}
+        for c in chunks[1:]:
+            part, _, deps = c.partition(':')
+            part = part.strip()
+            prefix = part + '/' if '/' in part else module + '/' + part
+            parts[module][prefix] = names(deps)
+
+    def closure(deps, seen):
+        out = set()
+        for d in deps:
+            if d in seen or d not in direct:
+                out.add(d)
+                continue
+            out.add(d)
+            if direct[d] is not None:
+                out |= closure(direct[d].union(*parts.get(d, {}).values()), seen | {d})
+        return out
+
+    allowed, only = {}, {}
+    for module, deps in direct.items():
+        if deps is None:
+            allowed[module] = None
+            continue
+        allowed[module] = closure(deps, {module}) - {module}
+        for prefix, pdeps in parts[module].items():
+            extra = closure(pdeps, {module}) - allowed[module] - {module}
+            for d in extra:
+                only[(module, d)] = prefix
+            allowed[module] |= extra
+    return allowed, only
+
+
+ALLOWED, SUBMODULE_ONLY = read_layering(sys.argv[1] if len(sys.argv) > 1 else '.')
 # Modules (or their light parts) that must not see deal.II, gmsh or PETSc.
 LIGHT = {'base', 'io', 'geometry', 'analytical', 'rating', 'calibration', 'dynamics', 'gearbox', 'optimise'}
 # Files of light modules that are heavy by design: ParameterHandler bindings (their own
 # targets), the optimiser's FE-in-the-loop tip-relief part, the gearbox FE stress source.
 HEAVY_FILES = re.compile(r'(^|/)(parameters|relief[a-z_]*)\.(h|cc)$|^gearbox/fe/')
-# The FE stress source of the gearbox (gearbox/fe) may use the solve chain; the rest of
-# gearbox may not.
-SUBMODULE_ONLY = {('gearbox', 'solve'): 'gearbox/fe/'}
 heavy_header = re.compile(r'#include\s*<(deal\.II/|gmsh|petsc|mpi\.h)')
 
 root = os.path.join(sys.argv[1] if len(sys.argv) > 1 else '.', 'lib')
@@ -80,7 +94,7 @@ for module in sorted(os.listdir(root)):
                 if dep not in ALLOWED[module]:
                     bad.append(f'lib/{rel}: includes {dep}/, not allowed for {module}')
                 elif (module, dep) in SUBMODULE_ONLY and not rel.startswith(SUBMODULE_ONLY[(module, dep)]):
-                    bad.append(f'lib/{rel}: includes {dep}/, allowed only in lib/{SUBMODULE_ONLY[(module, dep)]}')
+                    bad.append(f'lib/{rel}: includes {dep}/, allowed only in lib/{SUBMODULE_ONLY[(module, dep)]}*')
             sub = os.path.relpath(path, root)
             if module in LIGHT and not HEAVY_FILES.search(sub) and heavy_header.search(text):
                 bad.append(f'lib/{rel}: a deal.II/gmsh/PETSc/MPI header in the light module {module}')

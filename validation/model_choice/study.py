@@ -427,7 +427,7 @@ def metrics(d, torque):
 
 
 def pp_resolution(roll, ste):
-    """The resolution of a swept p-p as gearfem states it (choice::ste_ripple,
+    """The resolution of a swept p-p as gearfem states it (model_choice::ste_ripple,
     docs/model-choice.md step 3), computed here independently with numpy: at each position
     with two neighbours on each side, |STE - the least-squares quadratic through those four
     (numpy.polyfit)|; twice the median of these, relative to the p-p. nan with fewer than four."""

@@ -95,7 +95,7 @@ def main():
         sys.exit(c.finish())
     auto, full = res["auto"]["run"], res["full"]["run"]
     c.true("auto: route", auto["route"]["name"] == "condensed cycle", auto["route"]["name"], "condensed cycle",
-           f"choice::plan_route: {TORQUES} torques over 100-340 N m pay for the build from 8")
+           f"model_choice::plan_route: {TORQUES} torques over 100-340 N m pay for the build from 8")
     c.true("full: route", full["route"]["name"] == "full FE", full["route"]["name"], "full FE",
            "Solve/Target route = full FE")
     c.true("same delivered level (h_contact, DoFs)",

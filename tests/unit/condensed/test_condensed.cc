@@ -65,7 +65,7 @@ end
   {
     solve::GearContactInput in = parse(case_prm(0));
     std::unique_ptr<contact::GearContactModel> model = in.model();
-    condensed::CondensedCycle cycle = condensed::build_cycle(*model, in, 300, 100, 900);
+    condensed::CondensedCycle cycle = condensed::cycle_for(*model, in, {300, 100, 900});
   };
   Built &built()
   {
@@ -177,7 +177,7 @@ TEST(Condensed, ContactBeyondTheStoredCandidatesFailsLoudly)
   const auto in = parse(case_prm(
     0, "100", "subsection Contact\n  set Search distance = 0.005\n  set Slave selection = fixed\nend\n"));
   auto model    = in.model();
-  const auto cycle = condensed::build_cycle(*model, in, 100, 100, 4000, nullptr, 0.0);
+  const auto cycle = condensed::cycle_for(*model, in, {100, 100, 4000}, {0.0, nullptr});
   const condensed::Resolver r(cycle, in);
   EXPECT_NO_THROW(r.solve(2, 100, post::PostOptions()));
   try
@@ -198,7 +198,7 @@ TEST(Condensed, SceneSplitBoundsTheLoadRatioAndKeepsADegenerateRange)
   // single-torque optimiser: lo = hi = build) keeps one scene per position.
   auto in    = parse(case_prm(0, "300", "subsection Solve\n  set Number of positions = 2\nend\n"));
   auto model = in.model();
-  const auto split = condensed::build_cycle(*model, in, 300, 30, 900);
+  const auto split = condensed::cycle_for(*model, in, {300, 30, 900});
   for (const auto &scenes : split.cycle)
     {
       ASSERT_GE(scenes.size(), 4u);
@@ -209,7 +209,7 @@ TEST(Condensed, SceneSplitBoundsTheLoadRatioAndKeepsADegenerateRange)
             EXPECT_LE(std::max(ratio, 1 / ratio), 2.0 * (1 + 1e-9)) << p.load_lo << " " << p.load_hi;
           }
     }
-  const auto one = condensed::build_cycle(*model, in, 300, 300, 300);
+  const auto one = condensed::cycle_for(*model, in, {300, 300, 300});
   for (const auto &scenes : one.cycle)
     {
       ASSERT_EQ(scenes.size(), 1u);
@@ -224,7 +224,7 @@ TEST(Condensed, TorqueTableMatchesRotationControlledFullSolves)
   // solve_rotation) at table nodes; the table is contact solves on the cycle.
   auto in          = parse(case_prm(0, "300", "subsection Solve\n  set Number of positions = 8\nend\n"));
   auto model       = in.model();
-  const auto cycle = condensed::build_cycle(*model, in, 300, 30, 900);
+  const auto cycle = condensed::cycle_for(*model, in, {300, 30, 900});
   condensed::TableOptions o;
   o.n_delta  = 6;
   o.backlash = 50e-6;
@@ -253,6 +253,6 @@ TEST(Condensed, TorqueTableMatchesRotationControlledFullSolves)
   // Not one pitch of positions: refused with the entry named.
   auto few = parse(case_prm(0, "300", "subsection Solve\n  set Pitches = 0.5\n  set Number of positions = 8\nend\n"));
   auto m2  = few.model();
-  const auto c2 = condensed::build_cycle(*m2, few, 300, 30, 900);
+  const auto c2 = condensed::cycle_for(*m2, few, {300, 30, 900});
   EXPECT_THROW(condensed::torque_table(c2, *few.pair, o), InputError);
 }

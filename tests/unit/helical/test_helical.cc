@@ -121,7 +121,7 @@ end
     solve::GearContactInput in = parse(10);
     helical::SlicingOptions base = helical::slicing_options(in, helical::HelixInput(), post::PostOptions());
     std::unique_ptr<contact::GearContactModel> model = in.model();
-    condensed::CondensedCycle cycle = condensed::build_cycle(*model, in, 300, 30, 1200);
+    condensed::CondensedCycle cycle = condensed::cycle_for(*model, in, {300, 30, 1200});
   };
   Built &built()
   {
