@@ -124,6 +124,10 @@ namespace gearfem::condensed
                                      q.gap, q.force, q.pressure, q.weight, q.arm, double(c.edge), double(c.smooth)});
         }
       w.dataset(g.get(), "candidates", {m, hsize_t(n_candidate_columns)}, table, "SI", candidate_columns);
+      std::vector<double> approach;
+      for (const auto &c : p.cand)
+        approach.push_back(c.point.approach);
+      w.dataset(g.get(), "approach", {m}, approach, "m/rad", "n . (v_S - v_M) per unit drive rotation at the build");
       using IV = std::pair<int, double>;
       const auto emit_iv = [](const IV &e, std::vector<std::vector<double>> &fl) {
         fl[0].push_back(e.first), fl[1].push_back(e.second);

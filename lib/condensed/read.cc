@@ -179,6 +179,14 @@ namespace gearfem::condensed
           q.gap = c[15], q.force = c[16], q.pressure = c[17], q.weight = c[18], q.arm = c[19];
           p.cand[k].edge = c[20] != 0, p.cand[k].smooth = c[21] != 0;
         }
+      // The approach of each candidate at the build (normal-force power); files written before
+      // it was kept have none: 0, the normal-force power then reads 0.
+      if (H5Lexists(g.get(), "approach", H5P_DEFAULT) > 0)
+        {
+          const auto approach = g.vec("approach", m);
+          for (std::size_t k = 0; k < m; ++k)
+            p.cand[k].point.approach = approach[k];
+        }
       p.B[0]     = index_value(g, "B1", m, universe[0]);
       p.B[1]     = index_value(g, "B2", m, universe[1]);
       p.pressure = index_value(g, "pressure", m, m);

@@ -1,0 +1,214 @@
+// The Python module's calls beside the solve (python/module.cc): pair kinematics and tooth
+// profiles, the deviation draws of a tolerance grade, ISO 6336 / AGMA ratings, helical slicing
+// and a dynamics run. Each is the library's call that the matching command makes.
+#include "python/input.h"
+#include "python/results.h"
+
+#include "base/errors.h"
+#include "base/units.h"
+#include "condensed/parameters.h"
+#include "deviations/parameters.h"
+#include "dynamics/case.h"
+#include "dynamics/law_factory.h"
+#include "dynamics/parameters.h"
+#include "dynamics/report.h"
+#include "helical/parameters.h"
+#include "helical/run.h"
+#include "post/parameters.h"
+#include "rating/parameters.h"
+#include "rating/rating.h"
+#include "route/route.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace gearfem::python
+{
+  namespace
+  {
+    py::array_t<double> array(const std::vector<double> &v)
+    {
+      py::array_t<double> a(py::ssize_t(v.size()));
+      std::copy(v.begin(), v.end(), a.mutable_data());
+      return a;
+    }
+
+    solve::GearContactInput solve_input(const Input &in)
+    {
+      dealii::ParameterHandler prm;
+      route::declare_request(prm);
+      parse(in, prm);
+      return solve::parse_gear_contact_input(prm);
+    }
+
+    /// Pair kinematics and both gears' sampled outlines (mm, as profile_gear<i>.csv).
+    py::dict pair(const Input &in, double spacing_mm)
+    {
+      const solve::GearContactInput s = solve_input(in);
+      const auto &p                   = s.meshing();
+      py::dict d;
+      d["teeth"]                   = std::make_pair(p.teeth(1), p.teeth(2));
+      d["centre distance [mm]"]    = p.center_distance() / units::mm;
+      d["working pressure angle [deg]"] = p.working_pressure_angle() / units::deg;
+      d["contact ratio"]           = p.contact_ratio();
+      d["base pitch [mm]"]         = p.base_pitch() / units::mm;
+      d["internal"]                = p.is_internal();
+      py::dict points;
+      for (const char *n : {"A", "B", "C", "D", "E"})
+        points[n] = p.point(n).roll_angle / units::deg;
+      d["roll angle [deg]"] = points;
+      if (s.pair)
+        for (int g = 1; g <= 2; ++g)
+          {
+            std::vector<double> x, y, k;
+            for (const auto &q : s.pair->gear(g).sample(spacing_mm * units::mm))
+              x.push_back(q.p.x() / units::mm), y.push_back(q.p.y() / units::mm), k.push_back(q.curvature * units::mm);
+            py::dict o;
+            o["x [mm]"]             = array(x);
+            o["y [mm]"]             = array(y);
+            o["curvature [1/mm]"]   = array(k);
+            d[("gear " + std::to_string(g)).c_str()] = o;
+          }
+      return d;
+    }
+
+    /// The deviations of both gears: the given ones or draw `sample` of the grade.
+    py::dict deviation_draws(const Input &in, long sample)
+    {
+      dealii::ParameterHandler prm;
+      route::declare_request(prm);
+      parse(in, prm);
+      const solve::GearContactInput s           = solve::parse_gear_contact_input(prm);
+      const deviations::DeviationParameters dev = deviations::parse_deviation_parameters(prm);
+      const geometry::PairDeviations d          = deviations::resolve_deviations(dev, *s.pair, std::uint64_t(sample));
+      py::dict out;
+      for (int b = 0; b < 2; ++b)
+        {
+          const auto &g = d.gear[b];
+          std::vector<double> fpt, Fp, fha;
+          for (const double v : g.f_pt)
+            fpt.push_back(v / units::um);
+          for (const double v : g.cumulative_pitch())
+            Fp.push_back(v / units::um);
+          for (const double v : g.f_Ha)
+            fha.push_back(v / units::um);
+          py::dict o;
+          o["f_pt [um]"]           = array(fpt);
+          o["F_p [um]"]            = array(Fp);
+          o["f_Ha [um]"]           = array(fha);
+          o["F_r [um]"]            = 2 * g.eccentricity / units::um;
+          o["runout phase [deg]"]  = g.eccentricity_phase / units::deg;
+          out[("gear " + std::to_string(b + 1)).c_str()] = o;
+        }
+      return out;
+    }
+
+    /// ISO 6336 and AGMA ratings: {"standard/symbol": values per torque}, with "torques".
+    py::dict rate(const Input &in)
+    {
+      dealii::ParameterHandler prm;
+      route::declare_request(prm);
+      rating::declare_rating_parameters(prm);
+      parse(in, prm);
+      const solve::GearContactInput s = solve::parse_gear_contact_input(prm);
+      if (!s.pair)
+        throw InputError("Pair/Type", "internal", "external (gearfem.rate; `gearfem rate` rates internal pairs)");
+      const rating::RatingReport r = rating::rate(*s.pair, rating::parse_rating_parameters(prm));
+      py::dict out;
+      out["torques [N m]"] = array(r.torques);
+      for (const auto &row : r.rows)
+        out[(row.standard + "/" + row.symbol + (row.unit.empty() ? "" : " [" + row.unit + "]")).c_str()] =
+          array(row.values);
+      return out;
+    }
+
+    /// The helical pair of the input (Helical section): per torque the summary of `gearfem helical`.
+    py::list helical_run(const Input &in, const py::object &progress)
+    {
+      dealii::ParameterHandler prm;
+      route::declare_request(prm);
+      helical::declare_helical_parameters(prm);
+      condensed::declare_condense_parameters(prm);
+      parse(in, prm);
+      const helical::HelixInput hx = helical::parse_helical_parameters(prm);
+      solve::GearContactInput s =
+        hx.normal_section ? solve::parse_gear_contact_input(
+                              prm, [&](const geometry::GeometryInput &g) { return helical::transverse_section(g, hx.beta); }) :
+                            solve::parse_gear_contact_input(prm);
+      const post::PostOptions post = post::parse_post_parameters(prm);
+      const auto cp                = condensed::parse_condense_parameters(prm);
+      helical::RunOptions ro;
+      ro.build_torque = cp.build_torque, ro.torque_lo = cp.torque_lo, ro.torque_hi = cp.torque_hi;
+      ro.scene_ratio  = cp.scene_ratio;
+      const helical::SlicingOptions o = helical::slicing_options(s, hx, post);
+      ProgressStream stream(progress);
+      ro.out = stream.get();
+      helical::HelicalRun r;
+      {
+        py::gil_scoped_release release;
+        r = helical::run_helical(s, o, ro);
+      }
+      if (!r.failure.empty())
+        throw SolverError(r.failure);
+      py::list out;
+      for (const auto &t : r.summary)
+        {
+          py::dict d;
+          d["torque [N m]"]              = t.torque;
+          d["STE mean [um]"]             = t.ste_mean / units::um;
+          d["STE p-p [um]"]              = t.ste_pp / units::um;
+          d["mesh stiffness [N/um]"]     = t.k_mean * units::um;
+          d["c_gamma [N/(mm um)]"]       = t.c_gamma_iso();
+          d["K_Hbeta"]                   = t.k_h_beta;
+          d["p_max [MPa]"]               = t.p_max / 1e6;
+          d["root stress pinion [MPa]"]  = t.root_stress_pinion / 1e6;
+          d["root stress gear [MPa]"]    = t.root_stress_gear / 1e6;
+          out.append(d);
+        }
+      return out;
+    }
+
+    /// `gearfem dynamics` of the input (Dynamics sections): its tables as dicts of arrays.
+    py::dict dynamics_run(const Input &in, const py::object &progress)
+    {
+      dealii::ParameterHandler prm;
+      dynamics::declare_parameters(prm);
+      parse(in, prm);
+      dynamics::DynamicsCase c = dynamics::parse_parameters(prm, in.dir);
+      std::vector<std::string> notes;
+      if (c.law == dynamics::LawKind::external)
+        c.external_law = dynamics::external_law(c, c.backlash, notes);
+      auto model = dynamics::build_model(c, &notes);
+      ProgressStream stream(progress);
+      dynamics::CaseReport report;
+      {
+        py::gil_scoped_release release;
+        report = dynamics::run_case(c, *model, stream.get());
+      }
+      py::dict out;
+      for (const auto &[name, table] : report.tables)
+        out[name.c_str()] = table_dict(table);
+      out["summary"] = report.summary;
+      return out;
+    }
+  } // namespace
+
+  void bind_extras(py::module_ &m)
+  {
+    m.def("pair", &pair, py::arg("input"), py::arg("spacing_mm") = 0.05,
+          "Pair kinematics (centre distance, working pressure angle, contact ratio, points A-E) and both "
+          "gears' sampled outlines.");
+    m.def("deviation_draws", &deviation_draws, py::arg("input"), py::arg("sample") = 0,
+          "The deviations of both gears of the input's Deviations section: given, or draw `sample` of its "
+          "ISO 1328-1 grade (the draw of Monte Carlo sample `sample`).");
+    m.def("rate", &rate, py::arg("input"), "ISO 6336-2/-3 and AGMA 2101 stresses and factors per torque.");
+    m.def("helical", &helical_run, py::arg("input"), py::arg("progress") = py::none(),
+          "A helical pair by face-width slicing (the Helical section): the summary per torque.");
+    m.def("dynamics", &dynamics_run, py::arg("input"), py::arg("progress") = py::none(),
+          "Nonlinear pair dynamics of the input's dynamics sections: its tables (response, sweep, ...).");
+  }
+} // namespace gearfem::python

@@ -1,0 +1,179 @@
+"""The Python module gearfem against the CLI (tests/python, quick tier: ctest python_module).
+
+References: `gearfem solve` and `gearfem solve --condensed` of the same input, run here as
+processes (results.h5 holds the tables at full precision; the CSV files at 10 significant
+digits); the cycle file written, read and written again; the exit-status contract of the CLI
+(bad input: a named InputError; a solver failure: SolverError with its reason).
+"""
+import os
+import subprocess
+import threading
+import time
+
+import h5py
+import numpy as np
+import pytest
+
+import gearfem
+
+SRC = os.environ.get("GEARFEM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+GEARFEM = os.environ.get("GEARFEM", os.path.join(SRC, "build", "app", "gearfem"))
+# The tiny study of the quick batch tests: 3-tooth sectors of a 20/40 pair, 5 positions, 2 torques.
+STUDY = os.path.join(SRC, "tests", "regression", "data", "batch", "study.prm")
+
+
+def cli(*args):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    r = subprocess.run([GEARFEM, *args], capture_output=True, text=True, env=env)
+    assert r.returncode == 0, r.stdout + r.stderr
+    return r
+
+
+def h5_table(folder, name):
+    with h5py.File(os.path.join(folder, "results.h5"), "r") as f:
+        g = f[name]
+        return {k: np.asarray(g[k]) for k in g}
+
+
+def same_tables(py_table, h5_group, tol=1e-12):
+    """Every column of the module's table equals the file's to tol of the column's scale
+    (the wall time aside). The HDF5 datasets are named as the CSV columns."""
+    assert py_table, "empty table"
+    for key, values in py_table.items():
+        name = key.rsplit(" [", 1)[0]
+        if name == "time":
+            continue
+        ref = h5_group[key.replace("/", " per ")]  # HDF5 names cannot hold '/'
+
+        assert ref.shape == values.shape, key
+        scale = max(float(np.abs(ref).max()) if ref.size else 0.0, 1e-300)
+        if name in ("complementarity", "max penetration"):
+            scale = max(scale, 1e-6)  # round-off diagnostics (tests/regression/compare_outputs.py)
+        assert float(np.abs(values - ref).max() / scale) <= tol if ref.size else True, key
+
+
+@pytest.fixture(scope="module")
+def study():
+    return gearfem.read_input(STUDY)
+
+
+@pytest.fixture(scope="module")
+def cli_run(tmp_path_factory, study):
+    out = str(tmp_path_factory.mktemp("cli"))
+    cli("solve", STUDY, "--output-dir", out)
+    return out
+
+
+def test_solve_equals_the_cli(study, cli_run):
+    r = gearfem.solve(study)
+    assert r.route == "full FE"
+    same_tables(r.sweep, h5_table(cli_run, "sweep"))
+    same_tables(r.pairs, h5_table(cli_run, "pairs"))
+    assert r.run["route"]["name"] == "full FE"
+    # The CSV file holds 10 significant digits.
+    csv = np.genfromtxt(os.path.join(cli_run, "sweep.csv"), delimiter=",", names=True)
+    ste = r.sweep["STE [um]"]
+    assert np.allclose(csv["STE_um"], ste, rtol=1e-9, atol=0)
+
+
+def test_cycle_solve_equals_the_cli(tmp_path, study):
+    cycle_dir, on_cycle = str(tmp_path / "cycle"), str(tmp_path / "on_cycle")
+    cli("condense", STUDY, "--output-dir", cycle_dir)
+    cfile = os.path.join(cycle_dir, "condensed.h5")
+    cli("solve", STUDY, "--condensed", cfile, "--output-dir", on_cycle)
+    ref_sweep, ref_pairs = h5_table(on_cycle, "sweep"), h5_table(on_cycle, "pairs")
+    # The CLI's cycle, loaded, and a cycle built here from the same input.
+    for cyc in (gearfem.load_cycle(cfile), gearfem.condense(study)):
+        r = cyc.solve(torques=[100.0, 200.0])
+        assert r.route == "condensed cycle"
+        same_tables(r.sweep, ref_sweep)
+        same_tables(r.pairs, ref_pairs)
+
+
+def test_save_and_load_round_trip_bit_for_bit(tmp_path, study):
+    cyc = gearfem.condense(study)
+    a, b = str(tmp_path / "a.h5"), str(tmp_path / "b.h5")
+    cyc.save(a)
+    loaded = gearfem.load_cycle(a)
+    loaded.save(b)
+    with h5py.File(a, "r") as fa, h5py.File(b, "r") as fb:
+        names = []
+        fa.visit(names.append)
+        for n in names:
+            if isinstance(fa[n], h5py.Dataset):
+                assert np.array_equal(np.asarray(fa[n]), np.asarray(fb[n])), n
+            for k, v in fa[n].attrs.items():
+                assert np.array_equal(v, fb[n].attrs[k]), (n, k)
+        for k, v in fa.attrs.items():
+            if k != "created":
+                assert v == fb.attrs[k], k
+    r1, r2 = cyc.solve(torques=[150.0]), loaded.solve(torques=[150.0])
+    for k in r1.sweep:
+        if not k.startswith("time"):
+            assert np.array_equal(r1.sweep[k], r2.sweep[k]), k
+
+
+def test_variants_on_the_cycle(study):
+    cyc = gearfem.condense(study)
+    plain = cyc.solve(torques=[200.0])
+    relief = cyc.solve(torques=[200.0], relief={"Gear 1/Tip relief": "linear", "Gear 1/Tip relief amount": 10,
+                                                "Gear 1/Tip relief length": 2})
+    # A relief separates the flanks near the tip: the mean STE grows (more rotation per torque).
+    assert relief.sweep["STE [um]"].mean() > plain.sweep["STE [um]"].mean()
+    lo, hi = cyc.torque_range
+    assert lo <= 100.0 and hi >= 200.0
+
+
+def test_bad_input_raises_the_named_error(study):
+    with pytest.raises(gearfem.InputError, match="Solve/Torques") as e:
+        study.set({"Solve/Torques": -5})
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(gearfem.InputError, match="Tip relief amunt"):
+        study.set({"Gear 1/Tip relief amunt": 5})
+    with pytest.raises(gearfem.InputError, match="input file"):
+        gearfem.read_input("/nonexistent.prm")
+    cyc = gearfem.condense(study)
+    with pytest.raises(gearfem.InputError, match="torque range of the condensed cycle"):
+        cyc.solve(torques=[1e6])
+
+
+def test_a_solver_failure_raises_solver_error():
+    bad = gearfem.read_input(os.path.join(SRC, "inputs", "bad", "solve", "no_contact.prm"))
+    with pytest.raises(gearfem.SolverError, match="no contact found") as e:
+        gearfem.solve(bad)
+    assert isinstance(e.value, RuntimeError)
+
+
+def test_silent_by_default_progress_on_request_and_the_gil_released(study, capfd):
+    gearfem.solve(study)
+    assert capfd.readouterr().out == ""
+    lines = []
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.01)
+
+    t = threading.Thread(target=tick)
+    t.start()
+    gearfem.solve(study, progress=lines.append)
+    stop.set()
+    t.join()
+    assert any(line.startswith("position ") and "/10" in line for line in lines), lines[:5]
+    assert len(ticks) > 5  # the other thread ran during the solve
+
+
+def test_kinematics_draws_and_ratings(study):
+    p = gearfem.pair(study)
+    assert p["teeth"] == (20, 40)
+    assert 1.4 < p["contact ratio"] < 1.8
+    assert len(p["gear 1"]["x [mm]"]) > 100
+    graded = study.set({"Deviations/Accuracy grade": 6, "Deviations/Seed": 3})
+    d0, d1 = gearfem.deviation_draws(graded, 0), gearfem.deviation_draws(graded, 1)
+    f0 = d0["gear 1"]["f_pt [um]"]
+    assert len(f0) == 20 and abs(f0.sum()) < 1e-9  # single pitch deviations close the circle
+    assert not np.array_equal(f0, d1["gear 1"]["f_pt [um]"])
+    rating = gearfem.rate(study)
+    assert len(rating["torques [N m]"]) >= 1
