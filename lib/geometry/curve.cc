@@ -1,6 +1,8 @@
 // Plane curves with exact derivatives (see curve.h).
 #include "geometry/curve.h"
 
+#include "geometry/closest.h"
+
 #include "base/errors.h"
 #include "base/roots.h"
 
@@ -54,41 +56,10 @@ namespace gearfem::geometry
   double Curve::closest_parameter_in(const Vec2 &q, double a, double b) const
   {
     const double lo = std::min(a, b), hi = std::max(a, b);
-    // Sampled start.
-    const int n      = 64;
-    double    best_t = lo, best_d = std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= n; ++i)
-      {
-        const double t = lo + (hi - lo) * i / n;
-        const double d = (point(t) - q).squaredNorm();
-        if (d < best_d)
-          best_d = d, best_t = t;
-      }
-    // Safeguarded Newton on f(t) = (p - q).p' inside the bracket around the best sample.
-    double bl = std::max(lo, best_t - (hi - lo) / n), bh = std::min(hi, best_t + (hi - lo) / n);
-    double t  = best_t;
-    for (int it = 0; it < 60; ++it)
-      {
-        const Vec2   p = point(t) - q, p1 = d1(t), p2 = d2(t);
-        const double f = p.dot(p1), df = p1.squaredNorm() + p.dot(p2);
-        double       tn = (df > 0.0) ? t - f / df : 0.5 * (bl + bh);
-        if (!(tn > bl && tn < bh))
-          {
-            // Bisection on the sign of f (derivative of the squared distance).
-            const double fl = (point(bl) - q).dot(d1(bl));
-            if ((fl < 0.0) == (f < 0.0))
-              bl = t;
-            else
-              bh = t;
-            tn = 0.5 * (bl + bh);
-          }
-        if (std::abs(tn - t) <= 1e-15 * std::max(1.0, std::abs(t)))
-          {
-            t = tn;
-            break;
-          }
-        t = tn;
-      }
+    // The shared search (geometry/closest.h) from 64 samples.
+    const int n     = 64;
+    const auto eval = [this](double s, Vec2 &p, Vec2 &p1, Vec2 &p2) { evaluate(s, p, p1, p2); };
+    const double t  = geometry::closest_parameter(eval, [&](int i) { return point(lo + (hi - lo) * i / n); }, q, lo, hi, n);
     // The end points may be closer than the interior stationary point.
     const double dt = (point(t) - q).squaredNorm();
     if ((point(lo) - q).squaredNorm() < dt)

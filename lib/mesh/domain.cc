@@ -3,6 +3,7 @@
 #include "base/units.h"
 
 #include "base/errors.h"
+#include "geometry/closest.h"
 
 #include <gmsh.h>
 
@@ -46,49 +47,12 @@ namespace gearfem::mesh
 
   namespace
   {
-    /// Safeguarded Newton on f(t) = (p(t) - q) . p'(t) = 0 from t in the bracket [a, b].
-    /// `x` and `x1` return the point and the tangent at the result; `newton` whether the
-    /// last step was a Newton step that met the tolerance (false when it was a bisection:
-    /// the bracket was not verified and the iteration may have run into one of its ends).
+    /// geometry::newton_closest on the curve.
     double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b,
                           Vec2 &x, Vec2 &x1, bool &newton)
     {
-      Vec2 p2;
-      newton = false;
-      for (int it = 0; it < 50; ++it)
-        {
-          c.evaluate(t, x, x1, p2);
-          const Vec2 r   = x - q;
-          const double f = r.dot(x1), df = x1.squaredNorm() + r.dot(p2);
-          // Keep a bracket [a, b] for safeguarding (f is increasing through the minimum).
-          if (f > 0)
-            b = t;
-          else
-            a = t;
-          double tn = (df > 0) ? t - f / df : 0.5 * (a + b);
-          bool step = df > 0;
-          if (!(tn > a && tn < b))
-            tn = 0.5 * (a + b), step = false;
-          if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t)) + 1e-16 * (hi - lo))
-            {
-              // The last step is below round-off of t: first order carries x and x1 to it.
-              x += (tn - t) * x1, x1 += (tn - t) * p2;
-              t      = tn;
-              newton = step;
-              break;
-            }
-          t = tn;
-        }
-      const double tc = std::clamp(t, lo, hi);
-      if (tc != t)
-        c.evaluate(tc, x, x1, p2);
-      return tc;
-    }
-    double newton_closest(const ParametricCurve &c, const Vec2 &q, double lo, double hi, double t, double a, double b)
-    {
-      Vec2 x, x1;
-      bool newton = false;
-      return newton_closest(c, q, lo, hi, t, a, b, x, x1, newton);
+      const auto eval = [&c](double s, Vec2 &p, Vec2 &p1, Vec2 &p2) { c.evaluate(s, p, p1, p2); };
+      return geometry::newton_closest(eval, q, lo, hi, t, a, b, x, x1, newton);
     }
   } // namespace
 
@@ -112,16 +76,9 @@ namespace gearfem::mesh
 
   double ParametricCurve::closest_parameter(const Vec2 &q, double lo, double hi, const std::vector<Vec2> &samples) const
   {
-    const int n  = closest_samples;
-    double best  = lo, best_d = 1e300;
-    for (int i = 0; i <= n; ++i)
-      {
-        const double d = (samples[i] - q).squaredNorm();
-        if (d < best_d)
-          best_d = d, best = lo + (hi - lo) * i / n;
-      }
-    const double dt = (hi - lo) / n;
-    return newton_closest(*this, q, lo, hi, best, std::max(lo, best - dt), std::min(hi, best + dt));
+    const auto eval = [this](double s, Vec2 &p, Vec2 &p1, Vec2 &p2) { evaluate(s, p, p1, p2); };
+    return geometry::closest_parameter(eval, [&samples](int i) { return samples[std::size_t(i)]; }, q, lo, hi,
+                                       closest_samples);
   }
 
   double ParametricCurve::closest_parameter_from(const Vec2 &q, double lo, double hi, double t0, bool &ok) const
