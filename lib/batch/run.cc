@@ -8,8 +8,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <mpi.h>
-
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -23,49 +21,6 @@ namespace gearfem::batch
 {
   namespace
   {
-    constexpr int tag_ready = 181, tag_job = 182;
-
-    /// The jobs not yet handed out; shared by rank 0's manager thread and its own worker.
-    /// A rank that asks for a job gets the next one of the model key of its last job if one
-    /// is left (it re-uses its factorised model, ModelCache), else the next one in order.
-    class Queue
-    {
-    public:
-      Queue(std::vector<int> jobs, std::vector<std::string> keys)
-        : jobs_(std::move(jobs)), keys_(std::move(keys)), taken_(jobs_.size(), false)
-      {}
-      /// Next job for a rank whose cached model has key `key` ("" none); -1 when done.
-      /// `key` becomes the model key of the job handed out.
-      int take(std::string &key)
-      {
-        std::lock_guard<std::mutex> lock(m_);
-        std::size_t pick = jobs_.size();
-        for (std::size_t k = first_; k < jobs_.size() && !key.empty(); ++k)
-          if (!taken_[k] && keys_[k] == key)
-            {
-              pick = k;
-              break;
-            }
-        if (pick == jobs_.size())
-          while (first_ < jobs_.size() && taken_[first_])
-            ++first_;
-        if (pick == jobs_.size())
-          pick = first_;
-        if (pick == jobs_.size())
-          return -1;
-        taken_[pick] = true;
-        key          = keys_[pick];
-        return jobs_[pick];
-      }
-
-    private:
-      std::mutex m_;
-      std::vector<int> jobs_;
-      std::vector<std::string> keys_;
-      std::vector<bool> taken_;
-      std::size_t first_ = 0;
-    };
-
     /// Rank 0's progress lines: jobs done/total, failures, elapsed time, ETA.
     class Reporter
     {
@@ -127,77 +82,29 @@ namespace gearfem::batch
       std::unique_ptr<JobSupervisor> supervisor_;
     };
 
-    /// Rank 0: the manager thread (if there are other ranks) and, if the MPI library allows
-    /// it, a worker in the main thread.
-    void manage(const Study &study, const MpiSession &mpi, const BatchOptions &options,
-                const std::vector<int> &todo, const std::vector<std::string> &keys, Reporter &reporter)
+    /// This rank's part of the jobs `todo` (rank 0's list) through the one study driver: each
+    /// job in the rank's Runner, rank 0 reporting them.
+    void run_jobs(const Study &study, const ranks::MpiSession &mpi, const BatchOptions &options,
+                  const std::vector<int> &todo, const std::vector<std::string> &keys, Reporter *reporter)
     {
-      Queue queue(todo, keys);
-      std::map<int, std::string> rank_key; // model key of each rank's last job
+      std::unique_ptr<Runner> runner; // built on the first job: rank 0 may only manage
+      ranks::DriveOptions d;
+      d.run = [&](int j) {
+        if (!runner)
+          runner = std::make_unique<Runner>(study, options);
+        const JobRecord rec = runner->run(std::size_t(j));
+        return ranks::JobDone{rec.ok(), rec.wall_time, rec.shared_model};
+      };
+      d.finished = [&](int j, const ranks::JobDone &done, int rank) {
+        if (reporter)
+          reporter->finished(j, done.ok, rank, done.seconds, done.shared);
+      };
+      d.keys = keys;
       // A supervised worker process makes no MPI call in this process: rank 0 can always work.
-      const bool local_worker = mpi.size() == 1 || mpi.thread_multiple() || study.batch.isolation;
-      if (local_worker && !study.batch.isolation)
-        fem::initialize_petsc(); // not concurrently with the manager thread's MPI calls
-      std::thread manager;
-      if (mpi.size() > 1)
-        manager = std::thread([&]() {
-          int active = mpi.size() - 1;
-          while (active > 0)
-            {
-              int flag = 0;
-              MPI_Status st;
-              MPI_Iprobe(MPI_ANY_SOURCE, tag_ready, MPI_COMM_WORLD, &flag, &st);
-              if (!flag)
-                {
-                  std::this_thread::sleep_for(std::chrono::milliseconds(2));
-                  continue;
-                }
-              double msg[4];
-              MPI_Recv(msg, 4, MPI_DOUBLE, st.MPI_SOURCE, tag_ready, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-              if (msg[0] >= 0)
-                reporter.finished(int(msg[0]), msg[1] > 0, st.MPI_SOURCE, msg[2], msg[3] > 0);
-              int next = queue.take(rank_key[st.MPI_SOURCE]);
-              MPI_Send(&next, 1, MPI_INT, st.MPI_SOURCE, tag_job, MPI_COMM_WORLD);
-              if (next < 0)
-                --active;
-            }
-        });
-      std::exception_ptr error;
-      if (local_worker)
-        try
-          {
-            Runner runner(study, options);
-            std::string key;
-            for (int j = queue.take(key); j >= 0; j = queue.take(key))
-              {
-                const JobRecord rec = runner.run(std::size_t(j));
-                reporter.finished(j, rec.ok(), 0, rec.wall_time, rec.shared_model);
-              }
-          }
-        catch (...)
-          {
-            error = std::current_exception(); // the other ranks still get their jobs
-          }
-      if (manager.joinable())
-        manager.join();
-      if (error)
-        std::rethrow_exception(error);
-    }
-
-    void work(const Study &study, const BatchOptions &options)
-    {
-      double msg[4] = {-1, 0, 0, 0};
-      Runner runner(study, options);
-      while (true)
-        {
-          MPI_Send(msg, 4, MPI_DOUBLE, 0, tag_ready, MPI_COMM_WORLD);
-          int job = -1;
-          MPI_Recv(&job, 1, MPI_INT, 0, tag_job, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          if (job < 0)
-            return;
-          const JobRecord rec = runner.run(std::size_t(job));
-          msg[0] = job, msg[1] = rec.ok() ? 1 : 0, msg[2] = rec.wall_time, msg[3] = rec.shared_model ? 1 : 0;
-        }
+      d.local_worker = mpi.size() == 1 || mpi.thread_multiple() || study.batch.isolation;
+      if (!study.batch.isolation)
+        d.before_local = [] { fem::initialize_petsc(); }; // not concurrently with the manager's MPI calls
+      ranks::drive(mpi, todo, d);
     }
 
     std::vector<std::string> units_of(const Study &study)
@@ -210,42 +117,7 @@ namespace gearfem::batch
     }
   } // namespace
 
-  MpiSession::MpiSession()
-  {
-    int init = 0, provided = 0;
-    MPI_Initialized(&init);
-    if (!init)
-      {
-        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided);
-        we_initialized_ = true;
-      }
-    else
-      MPI_Query_thread(&provided);
-    multiple_ = provided >= MPI_THREAD_MULTIPLE;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
-  }
-
-  MpiSession::~MpiSession()
-  {
-    if (!we_initialized_)
-      return;
-    fem::finalize_petsc();
-    int done = 0;
-    MPI_Finalized(&done);
-    if (!done)
-      MPI_Finalize();
-  }
-
-  void MpiSession::barrier() const { MPI_Barrier(MPI_COMM_WORLD); }
-
-  int MpiSession::broadcast(int value) const
-  {
-    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    return value;
-  }
-
-  BatchOutcome run_batch(const Study &study, const MpiSession &mpi, const BatchOptions &o)
+  BatchOutcome run_batch(const Study &study, const ranks::MpiSession &mpi, const BatchOptions &o)
   {
     const auto t0 = std::chrono::steady_clock::now();
     BatchOutcome r;
@@ -316,7 +188,7 @@ namespace gearfem::batch
           try
             {
               Reporter reporter(out, study, root, todo.size());
-              manage(study, mpi, o, todo, keys, reporter);
+              run_jobs(study, mpi, o, todo, keys, &reporter);
               r.ran = todo.size();
             }
           catch (...)
@@ -324,7 +196,7 @@ namespace gearfem::batch
               error = std::current_exception();
             }
         else
-          work(study, o);
+          run_jobs(study, mpi, o, {}, {}, nullptr);
       }
 
     int status = 0;

@@ -2,13 +2,10 @@
 // The batch driver: the jobs of a study over the ranks of MPI_COMM_WORLD, with dynamic
 // (manager/worker) assignment, restart, failure isolation and progress on rank 0.
 //
-// Scheduling. Job costs differ 5-10x between designs, so jobs are handed out one at a time
-// to whichever rank asks. Rank 0 is the manager *and* a worker: a manager thread answers
-// the other ranks' requests (MPI_Iprobe every few milliseconds, so it costs no core), while
-// rank 0's main thread runs jobs like any worker. On a 2-core machine a pure manager would
-// leave one of two cores idle (efficiency <= 50 %). This needs MPI_THREAD_MULTIPLE (the
-// main thread's MUMPS also calls MPI on MPI_COMM_SELF); if the MPI library does not
-// provide it, rank 0 is a pure manager (said on the console).
+// Scheduling is the one study driver's (ranks/ranks.h): jobs handed out one at a time to
+// whichever rank asks, rank 0 a manager and a worker. Rank 0 works only with
+// MPI_THREAD_MULTIPLE (its MUMPS calls MPI on MPI_COMM_SELF) or with supervised worker
+// processes; else it is a pure manager (said on the console).
 // One design's positions are not split across ranks: a job's set-up (mesh, factorisation,
 // compliance) is a large part of its cost, and splitting would repeat it on every rank and
 // break the warm start from one position to the next (docs/batch.md).
@@ -23,6 +20,7 @@
 // failed job, not the end of the batch.
 #include "batch/aggregate.h"
 #include "batch/study.h"
+#include "ranks/ranks.h"
 
 #include <filesystem>
 #include <ostream>
@@ -33,28 +31,6 @@ namespace gearfem::batch
   /// Exit status of `gearfem batch` when the batch ran but some jobs failed or did not run
   /// (their status column says why). 0: all succeeded; 2: bad input (nothing ran).
   inline constexpr int exit_some_failed = 4;
-
-  /// MPI for the lifetime of the object (MPI_Init_thread unless already initialised; PETSc
-  /// and MPI finalised in the destructor, in that order).
-  class MpiSession
-  {
-  public:
-    MpiSession();
-    ~MpiSession();
-    MpiSession(const MpiSession &) = delete;
-    MpiSession &operator=(const MpiSession &) = delete;
-    int rank() const { return rank_; }
-    int size() const { return size_; }
-    bool thread_multiple() const { return multiple_; }
-    /// Every rank waits here.
-    void barrier() const;
-    /// The value of rank 0 on every rank.
-    int broadcast(int value) const;
-
-  private:
-    int rank_ = 0, size_ = 1;
-    bool multiple_ = false, we_initialized_ = false;
-  };
 
   struct BatchOptions
   {
@@ -80,5 +56,5 @@ namespace gearfem::batch
   /// Run the jobs of the study (collective over MPI_COMM_WORLD), then (rank 0, unless
   /// slicing) write batch.csv and batch.h5 from the job records. Every rank returns the same
   /// exit_status.
-  BatchOutcome run_batch(const Study &study, const MpiSession &mpi, const BatchOptions &options);
+  BatchOutcome run_batch(const Study &study, const ranks::MpiSession &mpi, const BatchOptions &options);
 } // namespace gearfem::batch

@@ -51,7 +51,7 @@ namespace gearfem::commands
     /// files and finds the same error: only rank 0 reports it (InputError), the others
     /// return nullopt with exit status 2.
     std::optional<batch::Study> load(dealii::ParameterHandler &prm, const RunContext &ctx,
-                                     const batch::MpiSession &mpi, std::ostream *out)
+                                     const ranks::MpiSession &mpi, std::ostream *out)
     {
       try
         {
@@ -99,7 +99,7 @@ namespace gearfem::commands
           serve(prm, ctx);
           return;
         }
-      batch::MpiSession mpi;
+      ranks::MpiSession mpi;
       // Each rank runs the serial chain: one thread per rank (the ranks are the parallelism).
       dealii::MultithreadInfo::set_thread_limit(1);
       std::ostream *out = mpi.rank() == 0 ? ctx.out : nullptr;

@@ -3,7 +3,7 @@
 // builds or reads it, the others read it), run each rank's samples, merge and report on rank 0.
 #include "base/errors.h"
 #include "base/memory.h"
-#include "batch/run.h"
+#include "ranks/ranks.h"
 #include "commands/command.h"
 #include "condensed/cycle.h"
 #include "condensed/resolve.h"
@@ -53,7 +53,7 @@ namespace gearfem::commands
       return i;
     }
 
-    condensed::CondensedCycle get_cycle(const Inputs &i, const RunContext &ctx, const batch::MpiSession &mpi,
+    condensed::CondensedCycle get_cycle(const Inputs &i, const RunContext &ctx, const ranks::MpiSession &mpi,
                                         std::ostream *out)
     {
       const std::filesystem::path stored = ctx.output_dir / condensed::file_name;
@@ -83,7 +83,7 @@ namespace gearfem::commands
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
-      batch::MpiSession mpi;
+      ranks::MpiSession mpi;
       dealii::MultithreadInfo::set_thread_limit(1);
       std::ostream *out = mpi.rank() == 0 ? ctx.out : nullptr;
       if (mpi.rank() != 0)
@@ -126,12 +126,12 @@ namespace gearfem::commands
       const double cpu0 = process_cpu_seconds();
       deviations::StudyOptions o;
       o.samples = i->tol.samples, o.output_dir = ctx.output_dir, o.out = out;
-      o.rank = mpi.rank(), o.size = mpi.size(), o.post = i->post;
+      o.post = i->post;
       std::string failure;
       long solved = 0;
       try
         {
-          solved = deviations::run_samples(cycle, i->in, i->dev, o);
+          solved = deviations::run_samples(cycle, i->in, i->dev, o, mpi);
         }
       catch (const SolverError &e)
         {

@@ -7,6 +7,7 @@
 #include "deviations/hunting.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -167,59 +168,60 @@ namespace gearfem::deviations
   }
 
   long run_samples(const condensed::CondensedCycle &cycle, const solve::GearContactInput &in,
-                   const DeviationParameters &dev, const StudyOptions &o)
+                   const DeviationParameters &dev, const StudyOptions &o, const ranks::MpiSession &mpi)
   {
     const auto done   = read_journals(o.output_dir, in.solve.torques.size());
     const auto failed = failed_samples(o.output_dir); // not retried: the same draw fails again
-    std::vector<long> todo;
-    for (long i = o.rank; i < o.samples; i += o.size)
+    std::vector<int> todo;
+    for (long i = 0; i < o.samples; ++i)
       if (!done.count(i) && !failed.count(i))
-        todo.push_back(i);
+        todo.push_back(int(i));
     if (o.out)
-      *o.out << "tolerance: " << o.samples << " samples on " << o.size << " rank" << (o.size == 1 ? "" : "s") << ", "
-             << done.size() << " finished and " << failed.size() << " failed before; this rank: " << todo.size()
+      *o.out << "tolerance: " << o.samples << " samples on " << mpi.size() << " rank" << (mpi.size() == 1 ? "" : "s")
+             << ", " << done.size() << " finished and " << failed.size() << " failed before; " << todo.size()
              << " to solve" << std::endl;
-    const std::filesystem::path journal = o.output_dir / journal_name(o.rank);
+    const std::filesystem::path journal = o.output_dir / journal_name(mpi.rank());
     const bool fresh = !std::filesystem::exists(journal);
     std::ofstream j(journal, std::ios::app);
     if (!j)
       throw InputError("output folder", o.output_dir.string(), "a writable folder (the sample journal)");
     if (fresh)
       j << journal_header << '\n' << std::flush;
-    Progress progress(o.out, todo.size(), "sample (rank 0)");
+    Progress progress(o.out, todo.size(), "sample");
+    std::size_t reported = 0;
     long n = 0;
-    for (const long i : todo)
-      {
-        std::vector<SampleResult> rows;
-        try
-          {
-            rows = solve_sample(cycle, in, dev, i, o.post);
-          }
-        catch (const SolverError &e)
-          {
-            // A sample the cycle cannot serve is recorded and the study goes on (like a failed
-            // batch job): failed.rank<r>.csv names it and the reason.
-            const auto file = o.output_dir / ("failed.rank" + std::to_string(o.rank) + ".csv");
-            std::ofstream f(file, std::ios::app);
-            std::string why = e.what();
-            std::replace(why.begin(), why.end(), '\n', ' ');
-            std::replace(why.begin(), why.end(), '"', '\'');
-            f << i << ",\"" << why << "\"\n" << std::flush;
-            ++n;
-            continue;
-          }
-        std::string block;
-        for (const auto &r : rows)
-          block += line(r) + '\n';
-        j << block << std::flush; // one write per sample: a sample is in the journal whole or not
-        ++n;
-        if (o.out)
-          {
-            std::ostringstream s;
-            s << "sample " << i << ": p-p STE " << std::setprecision(4) << rows.front().pp_ste * 1e6 << " um";
-            progress.step(std::size_t(n), s.str());
-          }
-      }
+    ranks::DriveOptions d;
+    d.run = [&](int i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      ++n;
+      try
+        {
+          std::string block;
+          for (const auto &r : solve_sample(cycle, in, dev, i, o.post))
+            block += line(r) + '\n';
+          j << block << std::flush; // one write per sample: a sample is in the journal whole or not
+        }
+      catch (const SolverError &e)
+        {
+          // A sample the cycle cannot serve is recorded and the study goes on (like a failed
+          // batch job): failed.rank<r>.csv names it and the reason.
+          const auto file = o.output_dir / ("failed.rank" + std::to_string(mpi.rank()) + ".csv");
+          std::ofstream f(file, std::ios::app);
+          std::string why = e.what();
+          std::replace(why.begin(), why.end(), '\n', ' ');
+          std::replace(why.begin(), why.end(), '"', '\'');
+          f << i << ",\"" << why << "\"\n" << std::flush;
+          return ranks::JobDone{false, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+        }
+      return ranks::JobDone{true, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+    };
+    d.finished = [&](int i, const ranks::JobDone &r, int rank) {
+      progress.step(++reported, "sample " + std::to_string(i) + " on rank " + std::to_string(rank) +
+                                  (r.ok ? "" : ": failed (failed.rank" + std::to_string(rank) + ".csv)"));
+    };
+    // A sample makes no MPI call: rank 0 works beside its manager thread with any thread level.
+    d.local_worker = true;
+    ranks::drive(mpi, todo, d);
     return n;
   }
 

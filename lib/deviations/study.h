@@ -9,6 +9,7 @@
 #include "post/position.h"
 #include "solve/input.h"
 #include "deviations/parameters.h"
+#include "ranks/ranks.h"
 
 #include <filesystem>
 #include <map>
@@ -54,16 +55,17 @@ namespace gearfem::deviations
     long samples = 100;
     std::filesystem::path output_dir;
     std::ostream *out = nullptr; ///< rank 0's console; null on the others
-    int rank = 0, size = 1;
     post::PostOptions post;
   };
 
-  /// This rank's part of the study: the samples i = rank, rank + size, ... not yet in its
-  /// journal (output_dir/samples.rank<r>.csv, one line per finished sample, appended and
-  /// flushed: a killed study resumes where it stopped). Returns the number solved or failed
-  /// now; a sample that fails (SolverError) is recorded (failed_samples) and the rank goes on.
+  /// The study over the ranks of `mpi` (collective): the samples not yet in any rank's journal
+  /// handed out one at a time by the one study driver (ranks/ranks.h), each solved on the rank
+  /// that asked and appended to its journal (output_dir/samples.rank<r>.csv, one line per
+  /// finished sample and torque, flushed: a killed study resumes where it stopped). Returns the
+  /// number this rank solved or failed; a sample that fails (SolverError) is recorded
+  /// (failed_samples) and the study goes on.
   long run_samples(const condensed::CondensedCycle &cycle, const solve::GearContactInput &in,
-                   const DeviationParameters &dev, const StudyOptions &options);
+                   const DeviationParameters &dev, const StudyOptions &options, const ranks::MpiSession &mpi);
 
   /// The samples recorded as failed (failed.rank<r>.csv: sample, the solver's reason): a draw
   /// the condensed cycle cannot serve (contact beyond its stored candidates) is recorded,
