@@ -130,6 +130,14 @@ namespace gearfem::solve
       require_range("Solve/Start", p.start / units::deg, -360.0, 360.0, "deg");
     for (const double a : p.roll_angles)
       require_range("Solve/Roll angles", a / units::deg, -360.0, 360.0, "deg");
+    // The accuracy target's p-p STE estimate and its ripple resolution read a cycle of evenly
+    // spaced positions: a list of roll angles would be taken for mesh ripple, and the choice
+    // would refine for it (docs/model-choice.md).
+    if (p.target != "none" && p.positions != SolveParameters::Positions::cycle)
+      throw InputError("Solve/Target", p.target, "none with Solve/Positions = " +
+                                                   std::string(p.positions == SolveParameters::Positions::list ? "list" : "named"),
+                       "an accuracy target needs Solve/Positions = cycle (evenly spaced positions: its p-p STE "
+                       "estimate reads their ripple); set the mesh instead, or sweep a cycle");
     if (p.positions == SolveParameters::Positions::list && p.roll_angles.empty())
       throw InputError("Solve/Roll angles", "(empty)", "at least one roll angle when Positions = list");
     if (p.positions == SolveParameters::Positions::named && p.names.empty())
