@@ -65,16 +65,16 @@ namespace gearfem::dynamics
         limits::check_face_width("Dynamics/Pair/Face width", face_width);
         require_greater("Dynamics/Mesh force/Single-pair stiffness", single_pair_stiffness, 0.0);
         require_greater("Dynamics/Mesh force/Double-pair factor", double_pair_factor, 0.0);
-        if (law == LawKind::external && external_source != ExternalSource::table_file)
-          {
-            limits::check_youngs_modulus("Dynamics/Pair/Young modulus", youngs_modulus);
-            // The analytical laws: the small-strain bound of the contact models at the pitch
-            // point of the standard pair (plane strain, one material).
-            const double r1 = 0.5 * module * z1, r2 = 0.5 * module * z2;
-            const double Es = youngs_modulus / (2 * (1 - poisson_ratio * poisson_ratio));
-            limits::check_small_strain("Dynamics/Operating/Input torque", input_torque, r1 * std::cos(alpha),
-                                       face_width, Es, (1 / r1 + 1 / r2) / std::sin(alpha));
-          }
+        // Every law: the small-strain bound of the contact models at the pitch point of the
+        // standard pair (plane strain, one material). A torque beyond it is no longer a gear
+        // mesh of this pair (and 2^31 N m took the integrator into an unbounded run).
+        limits::check_youngs_modulus("Dynamics/Pair/Young modulus", youngs_modulus);
+        {
+          const double r1 = 0.5 * module * z1, r2 = 0.5 * module * z2;
+          const double Es = youngs_modulus / (2 * (1 - poisson_ratio * poisson_ratio));
+          limits::check_small_strain("Dynamics/Operating/Input torque", input_torque, r1 * std::cos(alpha),
+                                     face_width, Es, (1 / r1 + 1 / r2) / std::sin(alpha));
+        }
         if (law == LawKind::ste && ste_theta.size() < 2)
           throw InputError("Dynamics/Mesh force/STE file", "(empty)",
                            "a CSV with >= 2 rows: position [deg], STE [um]");
