@@ -65,11 +65,13 @@ namespace gearfem::dynamics
         limits::check_face_width("Dynamics/Pair/Face width", face_width);
         require_greater("Dynamics/Mesh force/Single-pair stiffness", single_pair_stiffness, 0.0);
         require_greater("Dynamics/Mesh force/Double-pair factor", double_pair_factor, 0.0);
-        // Every law: the small-strain bound of the contact models at the pitch point of the
-        // standard pair (plane strain, one material). A torque beyond it is no longer a gear
-        // mesh of this pair (and 2^31 N m took the integrator into an unbounded run).
-        limits::check_youngs_modulus("Dynamics/Pair/Young modulus", youngs_modulus);
+        // Every law but a mesh table's (whose torque range bounds it, checked with the table):
+        // the small-strain bound of the contact models at the pitch point of the standard pair
+        // (plane strain, one material). A torque beyond it is no longer a gear mesh of this pair
+        // (and 2^31 N m took the integrator into an unbounded run).
+        if (!(law == LawKind::external && external_source == ExternalSource::table_file))
         {
+          limits::check_youngs_modulus("Dynamics/Pair/Young modulus", youngs_modulus);
           const double r1 = 0.5 * module * z1, r2 = 0.5 * module * z2;
           const double Es = youngs_modulus / (2 * (1 - poisson_ratio * poisson_ratio));
           limits::check_small_strain("Dynamics/Operating/Input torque", input_torque, r1 * std::cos(alpha),
