@@ -72,6 +72,9 @@ namespace gearfem::condensed
     /// Set-up and build wall times [s] (mesh + assemble + factorise, then the sweep).
     double setup_seconds = 0, build_seconds = 0;
     int dofs = 0;
+    /// Read for a torque window only (read_cycle's `torques`): the scenes outside it are not
+    /// in `cycle`, [torque_lo, torque_hi] is narrowed to the window, and write_cycle refuses it.
+    bool partial = false;
   };
 
   /// The key of the FE model behind a condensed cycle: solve::model_key of the input's
@@ -151,4 +154,10 @@ namespace gearfem::condensed
   /// Read a condensed cycle. InputError naming the file and item for a missing, foreign,
   /// corrupt or newer file.
   CondensedCycle read_cycle(const std::filesystem::path &file);
+  /// Read only what a run at `torques` [N m] (not empty) needs: per position, the scenes whose
+  /// load range meets [min, max] of them (a re-solve at one torque reads one scene of each
+  /// position; the demo's file of three scenes reads a third). The cycle's range is narrowed to
+  /// that window, so a torque outside it is refused as outside the stored range; torques outside
+  /// the file's own range are left for the run to refuse (CondensedCycle::at).
+  CondensedCycle read_cycle(const std::filesystem::path &file, const std::vector<double> &torques);
 } // namespace gearfem::condensed

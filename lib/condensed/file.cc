@@ -146,6 +146,9 @@ namespace gearfem::condensed
   void write_cycle(const CondensedCycle &c, const std::filesystem::path &file)
   {
     const Writer w(file.string());
+    if (c.partial)
+      throw InputError("condensed cycle output file", file.string(), "a cycle read in full",
+                       "this cycle was read for a torque window only (read_cycle with torques)");
     const QuietHdf5 quiet;
     TemporaryPath tmp(file);
     {

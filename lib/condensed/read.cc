@@ -4,6 +4,7 @@
 #include "base/errors.h"
 #include "io/hdf5_util.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -45,37 +46,38 @@ namespace gearfem::condensed
         last_dims = dims;
         return v;
       }
-      /// Compressed rows `prefix`_offsets with fields `names`; n rows.
-      std::vector<std::vector<std::vector<double>>> rows(const std::string &prefix, std::vector<std::string> names,
-                                                         std::size_t n, std::size_t range) const
+      /// Compressed rows `prefix`_offsets with fields `names` (equal lengths); n rows. Returns the
+      /// fields and the offsets (n + 1, non-decreasing, within the fields), with the first field
+      /// checked as an index in [0, range) when range > 0.
+      std::pair<std::vector<std::vector<double>>, std::vector<std::size_t>>
+      rows(const std::string &prefix, const std::vector<std::string> &names, std::size_t n, std::size_t range) const
       {
         const auto off = vec((prefix + "_offsets").c_str(), n + 1);
         std::vector<std::vector<double>> fields;
         for (const auto &f : names)
-          fields.push_back(vec((prefix + "_" + f).c_str()));
-        const std::size_t total = fields.empty() ? 0 : fields[0].size();
-        std::vector<std::vector<std::vector<double>>> out(n);
-        for (std::size_t i = 0; i < n; ++i)
           {
-            if (!(off[i] >= 0 && off[i] <= off[i + 1] && off[i + 1] <= double(total)))
+            fields.push_back(vec((prefix + "_" + f).c_str()));
+            if (fields.back().size() != fields[0].size())
+              r_.fail(path_ + "/" + prefix, "", "fields of different lengths", "equal lengths");
+          }
+        const std::size_t total = fields.empty() ? 0 : fields[0].size();
+        std::vector<std::size_t> offsets(n + 1, 0);
+        for (std::size_t i = 0; i <= n; ++i)
+          {
+            if (!(off[i] >= 0 && off[i] <= double(total) && (i == 0 || off[i] >= off[i - 1])))
               r_.fail(path_ + "/" + prefix + "_offsets", "", "not non-decreasing within the entries",
                       "offsets of compressed rows");
-            for (auto k = std::size_t(off[i]); k < std::size_t(off[i + 1]); ++k)
-              {
-                std::vector<double> e;
-                for (const auto &f : fields)
-                  {
-                    if (f.size() != total)
-                      r_.fail(path_ + "/" + prefix, "", "fields of different lengths", "equal lengths");
-                    e.push_back(f[k]);
-                  }
-                if (range > 0 && !(e[0] >= 0 && e[0] < double(range) && e[0] == std::floor(e[0])))
-                  r_.fail(path_ + "/" + prefix + "_" + names[0], "", to_string_g(e[0]),
-                          "an index in [0, " + std::to_string(range) + ")");
-                out[i].push_back(std::move(e));
-              }
+            offsets[i] = std::size_t(off[i]);
           }
-        return out;
+        if (range > 0)
+          for (std::size_t k = offsets[0]; k < offsets[n]; ++k)
+            {
+              const double e = fields[0][k];
+              if (!(e >= 0 && e < double(range) && e == std::floor(e)))
+                r_.fail(path_ + "/" + prefix + "_" + names[0], "", to_string_g(e),
+                        "an index in [0, " + std::to_string(range) + ")");
+            }
+        return {std::move(fields), std::move(offsets)};
       }
       hid_t get() const { return g_.get(); }
       const std::string &path() const { return path_; }
@@ -91,10 +93,13 @@ namespace gearfem::condensed
                                                                  std::size_t n, std::size_t range)
     {
       std::vector<std::vector<std::pair<int, double>>> out(n);
-      const auto rows = g.rows(prefix, {"index", "value"}, n, range);
+      const auto [f, off] = g.rows(prefix, {"index", "value"}, n, range);
       for (std::size_t i = 0; i < n; ++i)
-        for (const auto &e : rows[i])
-          out[i].emplace_back(int(e[0]), e[1]);
+        {
+          out[i].reserve(off[i + 1] - off[i]);
+          for (std::size_t k = off[i]; k < off[i + 1]; ++k)
+            out[i].emplace_back(int(f[0][k]), f[1][k]);
+        }
       return out;
     }
 
@@ -191,19 +196,21 @@ namespace gearfem::condensed
       p.B[1]     = index_value(g, "B2", m, universe[1]);
       p.pressure = index_value(g, "pressure", m, m);
       p.modification.assign(m, {});
-      const auto mod = g.rows("modification", {"body", "x", "y", "weight"}, m, 0);
+      const auto [mod, off] = g.rows("modification", {"body", "x", "y", "weight"}, m, 0);
       for (std::size_t k = 0; k < m; ++k)
-        for (const auto &e : mod[k])
+        for (std::size_t e = off[k]; e < off[k + 1]; ++e)
           {
-            if (!(e[0] == 1 || e[0] == 2))
-              r.fail(g.path() + "/modification_body", "", to_string_g(e[0]), "1 | 2");
-            p.modification[k].push_back({int(e[0]), contact::Vec2(e[1], e[2]), e[3]});
+            if (!(mod[0][e] == 1 || mod[0][e] == 2))
+              r.fail(g.path() + "/modification_body", "", to_string_g(mod[0][e]), "1 | 2");
+            p.modification[k].push_back({int(mod[0][e]), contact::Vec2(mod[1][e], mod[2][e]), mod[3][e]});
           }
       return p;
     }
   } // namespace
 
-  CondensedCycle read_cycle(const std::filesystem::path &file)
+  CondensedCycle read_cycle(const std::filesystem::path &file) { return read_cycle(file, {}); }
+
+  CondensedCycle read_cycle(const std::filesystem::path &file, const std::vector<double> &torques)
   {
     const std::string name = file.string();
     std::error_code ec;
@@ -250,6 +257,18 @@ namespace gearfem::condensed
     for (int b = 0; b < 2; ++b)
       read_body(r, f.get(), b, c.body[b]);
     const std::size_t universe[2] = {c.body[0].x.size(), c.body[1].x.size()};
+    // The torque window of a partial read, where it lies inside the stored range.
+    double want_lo = c.torque_lo, want_hi = c.torque_hi;
+    if (!torques.empty())
+      {
+        const auto [lo, hi] = std::minmax_element(torques.begin(), torques.end());
+        if (*lo >= c.torque_lo * (1 - 1e-12) && *hi <= c.torque_hi * (1 + 1e-12) && *lo <= *hi)
+          {
+            want_lo = std::max(c.torque_lo, *lo), want_hi = std::min(c.torque_hi, *hi);
+            c.partial = want_lo > c.torque_lo || want_hi < c.torque_hi;
+            c.torque_lo = want_lo, c.torque_hi = want_hi;
+          }
+      }
     for (std::size_t k = 0; k < phi.size(); ++k)
       {
         std::ostringstream n;
@@ -260,7 +279,23 @@ namespace gearfem::condensed
           r.fail(g.path(), "scenes", std::to_string(ns), "1..1000");
         c.cycle.emplace_back();
         for (long long s = 0; s < ns; ++s)
-          c.cycle.back().push_back(read_scene(r, g.get(), g.path(), "scene_" + std::to_string(s), universe));
+          {
+            const std::string scene = "scene_" + std::to_string(s);
+            if (c.partial)
+              {
+                const GroupReader sg(r, g.get(), g.path(), scene);
+                const double lo = r.double_attribute(sg.get(), sg.path(), "load_lo", "N m"),
+                             hi = r.double_attribute(sg.get(), sg.path(), "load_hi", "N m");
+                // Scenes are ascending; CondensedCycle::at gives the first one every torque
+                // below its range and the last one every torque above.
+                if ((hi < want_lo * (1 - 1e-12) && s + 1 < ns) || (lo > want_hi * (1 + 1e-12) && s > 0))
+                  continue;
+              }
+            c.cycle.back().push_back(read_scene(r, g.get(), g.path(), scene, universe));
+          }
+        if (c.cycle.back().empty())
+          r.fail(g.path(), "scenes", "none for " + to_string_g(want_lo) + " .. " + to_string_g(want_hi) + " N m",
+                 "scenes covering the torque range");
       }
     return c;
   }

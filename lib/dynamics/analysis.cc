@@ -75,7 +75,7 @@ namespace gearfem::dynamics
                         const ResponseOptions &o, State &x, double &t)
   {
     o.check();
-    IntegratorOptions io = integrator_options;
+    IntegratorOptions io = integrator_options.with_deadline();
     const double T = model.mesh_period_time();
     const bool fixed = !(io.method == Method::dopri5 && io.adaptive);
     if (fixed && o.steps_per_period > 0)
@@ -284,9 +284,10 @@ namespace gearfem::dynamics
       if (done % every == 0 || done == std::size_t(2 * n))
         bar.step(done);
     };
-    run_parallel({[&]() { a = sweep(prototype, integrator, options, up, 1,
+    const IntegratorOptions io = integrator.with_deadline(); // one wall-time cap for the whole sweep
+    run_parallel({[&]() { a = sweep(prototype, io, options, up, 1,
                                     [&](std::size_t i) { report(done_a, i); }); },
-                  [&]() { b = sweep(prototype, integrator, options, down, -1,
+                  [&]() { b = sweep(prototype, io, options, down, -1,
                                     [&](std::size_t i) { report(done_b, i); }); }},
                  threads);
     a.insert(a.end(), b.begin(), b.end());

@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace gearfem::dynamics
@@ -80,6 +81,22 @@ namespace gearfem::dynamics
       throw InputError("Dynamics/Integrator/Event tolerance", to_string_g(event_tolerance), "(0, 0.001]");
     if (max_step < 0)
       throw InputError("Dynamics/Integrator/Maximum step", to_string_g(max_step), ">= 0 (0: none)");
+    if (!(wall_limit >= 0 && wall_limit <= 1e7))
+      throw InputError("Dynamics/Integrator/Wall time limit", to_string_g(wall_limit) + " s",
+                       "0 (none) to 1e7 s");
+  }
+
+  double monotonic_seconds()
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+
+  IntegratorOptions IntegratorOptions::with_deadline() const
+  {
+    IntegratorOptions o = *this;
+    if (o.deadline == 0 && o.wall_limit > 0)
+      o.deadline = monotonic_seconds() + o.wall_limit;
+    return o;
   }
 
   Integrator::Integrator(const IntegratorOptions &options)
@@ -239,6 +256,10 @@ namespace gearfem::dynamics
       {
         if (++steps > max_steps_per_advance)
           stop("more than " + std::to_string(max_steps_per_advance) + " integration steps");
+        if (opt_.deadline > 0 && steps % 1024 == 0 && monotonic_seconds() > opt_.deadline)
+          throw SolverError("the run reached its wall-time limit, Dynamics/Integrator/Wall time limit = " +
+                            to_string_g(opt_.wall_limit) + " s, at t = " + to_string_g(t) +
+                            " (raise the limit, or shorten the run: Periods per speed, Number of speeds)");
         if (stalled > max_stalled_steps)
           stop(std::to_string(max_stalled_steps) + " consecutive steps each shorter than 1e-8 of the interval");
         const double t_before = t;

@@ -57,10 +57,19 @@ namespace gearfem::dynamics
     double max_step = 0.0;       ///< upper bound of the adaptive step (0: none)
     double event_tolerance = 1e-12; ///< bracket width of located events [time unit]
     bool locate_events = true;   ///< false: let the mode switch at step ends (chatters)
+    /// Wall-time cap of a run [s] (`Dynamics/Integrator/Wall time limit`; 0: none): the first
+    /// run_response or sweep_up_down of a run turns it into `deadline`, and advance() ends with
+    /// a SolverError naming the entry once the deadline has passed.
+    double wall_limit = 0.0;
+    double deadline   = 0.0; ///< monotonic_seconds() at which the run stops (0: none)
     /// Throws InputError (names "Integrator/...") for step <= 0 and tolerances out of range:
     /// rtol in [1e-14, 1e-2], atol in (0, max_absolute_tolerance], event tolerance in (0, 1e-3].
     void check() const;
+    /// The deadline of a run starting now: `deadline` if set, else now + wall_limit (if > 0).
+    IntegratorOptions with_deadline() const;
   };
+  /// Seconds of a monotonic clock (std::chrono::steady_clock).
+  double monotonic_seconds();
   inline constexpr double max_absolute_tolerance = 1e-3;
   /// The caps of Integrator::advance, beyond which a call ends with a named SolverError
   /// instead of running on: the steps (accepted, rejected and event steps) of one call, and

@@ -189,6 +189,9 @@ namespace gearfem::dynamics
     prm.declare_entry("Event location", "true", Bool(), "Locate contact and stiffness events [-].");
     prm.declare_entry("Event tolerance", "1e-12", Double(),
                       "Units: s (dimensionless in KS mode). Allowed: > 0 and <= 1e-3.");
+    prm.declare_entry("Wall time limit", "3600", Double(),
+                      "Cap of the whole run (response or sweep): beyond it the run ends with a solver failure "
+                      "(exit 3) naming this entry. Units: s. Allowed: 0 (none) to 1e7.");
     prm.leave_subsection();
 
     prm.enter_subsection("Analysis");
@@ -329,6 +332,7 @@ namespace gearfem::dynamics
     c.integrator.atol = params::get_double(prm, "Absolute tolerance");
     c.integrator.locate_events = params::get_bool(prm, "Event location");
     c.integrator.event_tolerance = params::get_double(prm, "Event tolerance");
+    c.integrator.wall_limit = params::get_double(prm, "Wall time limit");
     if (c.integrator.method != Method::dopri5)
       require_greater("Dynamics/Integrator/Steps per period", c.response.steps_per_period, 0.0);
     c.integrator.step = c.model == ModelKind::kahraman_singh ? 1e-2 : 1e-6; // first trial step

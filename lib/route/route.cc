@@ -224,7 +224,7 @@ namespace gearfem::route
     {
       if (r.cycle)
         return *r.cycle;
-      storage = condensed::read_cycle(r.cycle_file);
+      storage = condensed::read_cycle(r.cycle_file, r.input.solve.torques); // the scenes of its torques
       return storage;
     }
 

@@ -15,12 +15,18 @@ and merged them, or a tolerance study with samples recorded as failed); never 1,
 error", an exit 3 a "gearfem: solver failure:" line with the solver's reason; an exit 0 of a real run must leave no nan/inf in its CSV
 files.
 
-Mutations: a number scaled by 0, -1, 1e6, 1e-6, or shifted by +-1; a special value
-(${X}, 1e-320, 1e400, inf, nan, {1|2}, 0x10, 1.5x, empty, a long number, true); a deleted,
-duplicated or junk line; a stray `end` or `subsection`.
+Mutations (--mode text, the default): a number scaled by 0, -1, 1e6, 1e-6, or shifted by +-1;
+a special value (${X}, 1e-320, 1e400, inf, nan, {1|2}, 0x10, 1.5x, empty, a long number, true);
+a deleted, duplicated or junk line; a stray `end` or `subsection`.
+
+Structure-aware mutations (--mode structured): exactly one declared entry of the input's command
+(`gearfem <command> --print-parameters json`: the entries the file sets, and half the time any
+other entry of the command, added in its subsection) set to an edge value: 0, -1, its value
+times +-1e12 or +-1e-12, nan, 2^31; for a list, empty, reversed or doubled; for a keyword,
+another option of its selection or a keyword of another entry. --mode both alternates.
 
   tests/fuzz/fuzz_inputs.py --gearfem build/app/gearfem --src . --mutants 300 --seed 13
-  scripts/fuzz_inputs [N] [SEED]     (the long run: 10 000 mutants, 20 % of the cheap ones run)
+  scripts/fuzz_inputs [N] [SEED] [MODE]  (the long run: 10 000 structure-aware mutants)
 
 Prints one line per failing mutant (and keeps its file in --keep), then a summary with the
 exit counts per command. Exit status 0 when every mutant passed, 1 otherwise.
@@ -112,6 +118,101 @@ def mutate(lines, rng):
     return lines, "junk at line %d: %s" % (i + 1, junk.replace("\n", "|")[:40])
 
 
+def decode(name):
+    """deal.II's mangled JSON names: _XX is the character of hex XX."""
+    return re.sub(r"_([0-9a-f]{2})", lambda m: chr(int(m.group(1), 16)), name)
+
+
+def declared_entries(gearfem, command, cache={}):
+    """[(subsection path, entry name, default value, pattern description)] of a command."""
+    key = tuple(command)
+    if key not in cache:
+        import json
+        p = subprocess.run([gearfem] + command + ["--print-parameters", "json"], stdout=subprocess.PIPE,
+                           stderr=subprocess.DEVNULL, timeout=60)
+        entries = []
+
+        def walk(node, path):
+            for k, v in node.items():
+                if not isinstance(v, dict):
+                    continue
+                if "pattern_description" in v:
+                    entries.append((tuple(path), decode(k), v.get("default_value", ""), v["pattern_description"]))
+                else:
+                    walk(v, path + [decode(k)])
+        try:
+            walk(json.loads(p.stdout.decode()), [])
+        except ValueError:
+            pass
+        cache[key] = entries
+    return cache[key]
+
+
+def options_of(pattern):
+    """The options of a deal.II selection pattern ("[Selection a|b ]"); [] for other patterns."""
+    m = re.match(r"\[(?:Multiple)?Selection (.*) \]", pattern)
+    return [o for o in m.group(1).split("|") if o] if m else []
+
+
+def file_entries(lines):
+    """{(subsection path, entry name): line index} of the `set` lines of a .prm text."""
+    out, stack = {}, []
+    for i, l in enumerate(lines):
+        t = l.split("#", 1)[0].strip()
+        if t.startswith("subsection "):
+            stack.append(t[len("subsection "):].strip())
+        elif t == "end":
+            if stack:
+                stack.pop()
+        else:
+            m = re.match(r"set\s+([^=]+?)\s*=", t)
+            if m:
+                out[(tuple(stack), m.group(1))] = i
+    return out
+
+
+def edge_values(value, pattern, keywords, rng):
+    """The structure-aware edge values of one entry with `value` and deal.II `pattern`."""
+    numbers = list(NUMBER.finditer(value))
+    items = [v.strip() for v in re.split(r"[,;]", value) if v.strip()]
+    out = ["0", "-1", "nan", "2147483648"]
+    if numbers:
+        m = rng.choice(numbers)
+        x = float(m.group(0)) or 1.0
+        for f in (1e12, -1e12, 1e-12, -1e-12):
+            out.append(value[:m.start()] + "%.17g" % (x * f) + value[m.end():])
+    else:
+        for f in (1e12, -1e12, 1e-12, -1e-12):
+            out.append("%.17g" % f)
+    sep = ";" if ";" in value else ","
+    out += ["", (sep + " ").join(reversed(items)) if len(items) > 1 else value,
+            (sep + " ").join(items + items) if items else value]
+    options = [o for o in options_of(pattern) if o != value.strip()]
+    out.append(rng.choice(options) if options and rng.random() < 0.6 else rng.choice(keywords or ["none"]))
+    return out
+
+
+def mutate_structured(lines, rng, entries, keywords):
+    """One structure-aware mutation: one entry of the command to one edge value."""
+    lines = list(lines)
+    present = file_entries(lines)
+    candidates = [e for e in entries if (e[0], e[1]) in present]
+    if not candidates or rng.random() < 0.5:
+        candidates = entries or candidates
+    if not candidates:
+        return mutate(lines, rng)
+    path, name, default, pattern = rng.choice(candidates)
+    i = present.get((path, name))
+    value = lines[i].split("=", 1)[1].split("#", 1)[0].strip() if i is not None else default
+    new = rng.choice(edge_values(value, pattern, keywords, rng))
+    where = "/".join(path + (name,))
+    if i is not None:
+        lines[i] = lines[i].split("=", 1)[0] + "= " + new
+        return lines, "%s: %s -> %s" % (where, value[:30], new[:40])
+    lines += ["subsection " + s for s in path] + ["set %s = %s" % (name, new)] + ["end"] * len(path)
+    return lines, "%s (default %s) added: %s" % (where, default[:30], new[:40])
+
+
 def csv_has_nonfinite(folder):
     for f in glob.glob(os.path.join(folder, "**", "*.csv"), recursive=True):
         with open(f, errors="replace") as h:
@@ -169,6 +270,8 @@ def main():
     ap.add_argument("--run-timeout", type=float, default=120.0, help="time limit [s] of one real run")
     ap.add_argument("--jobs", type=int, default=2, help="gearfem processes at a time")
     ap.add_argument("--keep", default="", help="folder where failing mutants are copied")
+    ap.add_argument("--mode", choices=["text", "structured", "both"], default="text",
+                    help="text mutations, structure-aware ones (one declared entry to an edge value), or both")
     args = ap.parse_args()
 
     gearfem = os.path.abspath(args.gearfem)
@@ -181,6 +284,11 @@ def main():
     t0 = time.time()
     try:
         files = set_up(gearfem, seeds, work)
+        # The files the inputs name relative to themselves (a batch's design table): the
+        # mutants are written to the work folder, beside copies of them.
+        for aux in glob.glob(os.path.join(args.src, "inputs", "*")):
+            if os.path.isfile(aux) and not aux.endswith((".prm", ".md")):
+                shutil.copy(aux, work)
         texts = {}
         for f in inputs:
             t = open(f).read()
@@ -188,6 +296,8 @@ def main():
                 t = t.replace(k, v)
             texts[f] = t.split("\n")
         rng = random.Random(args.seed)
+        # The keywords of every selection of every command: "another keyword" of a structured mutant.
+        keywords = sorted({o for f in inputs for e in declared_entries(gearfem, command_of(f)) for o in options_of(e[3])})
         exits = collections.Counter()
         by_command = collections.defaultdict(collections.Counter)
         mutants_of = collections.Counter()
@@ -200,10 +310,13 @@ def main():
         for k in range(args.mutants):
             src = inputs[k % len(inputs)]
             cmd = command_of(src)
-            lines, what = mutate(texts[src], rng)
-            if rng.random() < 0.2:  # sometimes two mutations at once
-                lines, what2 = mutate(lines, rng)
-                what += "; " + what2
+            if args.mode == "structured" or (args.mode == "both" and k % 2 == 1):
+                lines, what = mutate_structured(texts[src], rng, declared_entries(gearfem, cmd), keywords)
+            else:
+                lines, what = mutate(texts[src], rng)
+                if rng.random() < 0.2:  # sometimes two mutations at once
+                    lines, what2 = mutate(lines, rng)
+                    what += "; " + what2
             mutant = os.path.join(work, "m%05d_%s" % (k, os.path.basename(src)))
             with open(mutant, "w") as f:
                 f.write("\n".join(lines))
@@ -262,8 +375,8 @@ def main():
     wall = time.time() - t0
     for f in sorted(failures):
         print("FAIL:", f)
-    print("fuzz: %d mutants of %d inputs (seed %d), %d calls, %d real runs (%.1f %% of the mutants), %.1f s" % (
-        args.mutants, len(inputs), args.seed, calls, runs, 100.0 * runs / max(1, args.mutants), wall))
+    print("fuzz (%s mutations): %d mutants of %d inputs (seed %d), %d calls, %d real runs (%.1f %% of the mutants), %.1f s" % (
+        args.mode, args.mutants, len(inputs), args.seed, calls, runs, 100.0 * runs / max(1, args.mutants), wall))
     print("exits: " + ", ".join("%s: %d" % (k, v) for k, v in sorted(exits.items(), key=str)))
     print("| command | mutants | --validate exits | real runs: exits |")
     print("|---|---|---|---|")

@@ -266,3 +266,35 @@ TEST(Integrators, StepCapEndsAChatteringRun)
       EXPECT_NE(std::string(e.what()).find("consecutive steps"), std::string::npos) << e.what();
     }
 }
+
+// The run's wall-time cap: an advance of 1e7 fixed steps (1e-7 over t = 1, about a second)
+// ends, once the deadline has passed, with a SolverError naming the entry, after about the
+// limit (0.02 s here).
+TEST(Integrators, WallTimeCapEndsALongRun)
+{
+  IntegratorOptions o;
+  o.method     = Method::rk4;
+  o.adaptive   = false;
+  o.step       = 1e-7;
+  o.wall_limit = 0.02;
+  Integrator integ(o.with_deadline());
+  Oscillator s;
+  State x(2);
+  x << 1.0, 0.0;
+  double t    = 0;
+  const double start = gearfem::dynamics::monotonic_seconds();
+  try
+    {
+      integ.advance(s, x, t, 1.0);
+      FAIL() << "the capped run finished";
+    }
+  catch (const gearfem::SolverError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("Wall time limit"), std::string::npos) << e.what();
+    }
+  EXPECT_GT(t, 0.0);
+  EXPECT_LT(t, 1.0);
+  EXPECT_LT(gearfem::dynamics::monotonic_seconds() - start, 5.0); // ended near the cap, not at t = 1
+  o.wall_limit = -1;
+  EXPECT_THROW(Integrator{o}, gearfem::InputError);
+}
