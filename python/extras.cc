@@ -6,15 +6,12 @@
 
 #include "base/errors.h"
 #include "base/units.h"
-#include "condensed/parameters.h"
 #include "deviations/parameters.h"
 #include "dynamics/case.h"
 #include "dynamics/law_factory.h"
 #include "dynamics/parameters.h"
 #include "dynamics/report.h"
-#include "helical/parameters.h"
 #include "helical/run.h"
-#include "post/parameters.h"
 #include "rating/parameters.h"
 #include "rating/rating.h"
 #include "route/route.h"
@@ -130,21 +127,12 @@ namespace gearfem::python
     py::list helical_run(const Input &in, const py::object &progress)
     {
       dealii::ParameterHandler prm;
-      route::declare_request(prm);
-      helical::declare_helical_parameters(prm);
-      condensed::declare_condense_parameters(prm);
+      helical::declare_request(prm);
       parse(in, prm);
-      const helical::HelixInput hx = helical::parse_helical_parameters(prm);
-      solve::GearContactInput s =
-        hx.normal_section ? solve::parse_gear_contact_input(
-                              prm, [&](const geometry::GeometryInput &g) { return helical::transverse_section(g, hx.beta); }) :
-                            solve::parse_gear_contact_input(prm);
-      const post::PostOptions post = post::parse_post_parameters(prm);
-      const auto cp                = condensed::parse_condense_parameters(prm);
-      helical::RunOptions ro;
-      ro.build_torque = cp.build_torque, ro.torque_lo = cp.torque_lo, ro.torque_hi = cp.torque_hi;
-      ro.scene_ratio  = cp.scene_ratio;
-      const helical::SlicingOptions o = helical::slicing_options(s, hx, post);
+      helical::Request req = helical::parse_request(prm);
+      const solve::GearContactInput &s = req.section;
+      const helical::SlicingOptions &o = req.slicing;
+      helical::RunOptions &ro          = req.run;
       ProgressStream stream(progress);
       ro.out = stream.get();
       helical::HelicalRun r;

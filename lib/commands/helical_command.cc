@@ -4,11 +4,7 @@
 #include "base/errors.h"
 #include "base/units.h"
 #include "commands/command.h"
-#include "condensed/parameters.h"
-#include "helical/parameters.h"
 #include "helical/run.h"
-#include "post/parameters.h"
-#include "solve/input.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -18,35 +14,17 @@ namespace gearfem::commands
 {
   namespace
   {
-    void declare(dealii::ParameterHandler &prm)
-    {
-      solve::declare_gear_contact_input(prm);
-      post::declare_post_parameters(prm);
-      condensed::declare_condense_parameters(prm);
-      helical::declare_helical_parameters(prm);
-    }
+    void declare(dealii::ParameterHandler &prm) { helical::declare_request(prm); }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
-      std::ostream &out            = *ctx.out;
-      const helical::HelixInput hx = helical::parse_helical_parameters(prm);
-      solve::GearContactInput in =
-        hx.normal_section ? solve::parse_gear_contact_input(prm,
-                                                            [&](const geometry::GeometryInput &g) {
-                                                              return helical::transverse_section(g, hx.beta);
-                                                            }) :
-                            solve::parse_gear_contact_input(prm);
-      const post::PostOptions post = post::parse_post_parameters(prm);
-      const auto cp                = condensed::parse_condense_parameters(prm);
-      helical::RunOptions ro;
-      ro.out          = &out;
-      ro.build_torque = cp.build_torque;
-      ro.torque_lo    = cp.torque_lo;
-      ro.torque_hi    = cp.torque_hi;
-      ro.scene_ratio  = cp.scene_ratio;
-      ro.cycle_file   = ctx.condensed;
-      // The checks and the helix, before any meshing; the positions become the grid.
-      const helical::SlicingOptions o = helical::slicing_options(in, hx, post);
+      std::ostream &out                 = *ctx.out;
+      helical::Request req              = helical::parse_request(prm);
+      const solve::GearContactInput &in = req.section;
+      const helical::SlicingOptions &o  = req.slicing;
+      helical::RunOptions &ro           = req.run;
+      ro.out                            = &out;
+      ro.cycle_file                     = ctx.condensed;
       {
         const auto &h = o.helix;
         out << std::setprecision(5) << "helical: z " << in.pair->gear(1).teeth() << "/" << in.pair->gear(2).teeth()

@@ -1,5 +1,10 @@
 #include "helical/parameters.h"
 
+#include "condensed/parameters.h"
+#include "helical/run.h"
+#include "post/parameters.h"
+#include "solve/input.h"
+
 #include "base/errors.h"
 #include "base/units.h"
 #include "params/checked.h"
@@ -80,5 +85,36 @@ namespace gearfem::helical
     if (l < 0 && l != -1)
       throw InputError("Helical/Coupling length", to_string_g(l) + " mm", "-1, 0, or > 0 up to the face width");
     return h;
+  }
+} // namespace gearfem::helical
+
+namespace gearfem::helical
+{
+  void declare_request(dealii::ParameterHandler &prm)
+  {
+    solve::declare_gear_contact_input(prm);
+    post::declare_post_parameters(prm);
+    condensed::declare_condense_parameters(prm);
+    declare_helical_parameters(prm);
+  }
+
+  Request parse_request(dealii::ParameterHandler &prm)
+  {
+    Request r;
+    r.helix = parse_helical_parameters(prm);
+    const double beta = r.helix.beta;
+    r.section = r.helix.normal_section ?
+                  solve::parse_gear_contact_input(
+                    prm, [&](const geometry::GeometryInput &g) { return transverse_section(g, beta); }) :
+                  solve::parse_gear_contact_input(prm);
+    const post::PostOptions post = post::parse_post_parameters(prm);
+    const auto cp                = condensed::parse_condense_parameters(prm);
+    r.run.build_torque = cp.build_torque;
+    r.run.torque_lo    = cp.torque_lo;
+    r.run.torque_hi    = cp.torque_hi;
+    r.run.scene_ratio  = cp.scene_ratio;
+    // The checks and the helix, before any meshing; the positions become the grid.
+    r.slicing = slicing_options(r.section, r.helix, post);
+    return r;
   }
 } // namespace gearfem::helical

@@ -66,3 +66,27 @@ namespace gearfem::helical
   /// each written atomically into `dir`.
   void write_helical(const HelicalRun &run, const std::filesystem::path &dir, const std::string &input_name);
 } // namespace gearfem::helical
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace gearfem::helical
+{
+  /// A `gearfem helical` job as its input file states it: the transverse section (given in the
+  /// normal section by default, ISO 21771), the slicing with its helix, and the cycle options.
+  /// The one parser of the CLI command and the Python module's gearfem.helical.
+  struct Request
+  {
+    solve::GearContactInput section;
+    HelixInput helix;
+    SlicingOptions slicing;
+    RunOptions run; ///< out, cycle_file and write_cycle are the caller's
+  };
+  /// The sections a helical job reads: the solve input, post-processing, Condense and Helical.
+  void declare_request(dealii::ParameterHandler &prm);
+  /// The request of a parsed handler; InputError (naming the entry) for a bad helix or slicing,
+  /// before any meshing.
+  Request parse_request(dealii::ParameterHandler &prm);
+} // namespace gearfem::helical
