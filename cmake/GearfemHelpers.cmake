@@ -1,8 +1,23 @@
 # Helpers shared by all modules.
 
+# Unity builds of the libraries: the translation units of one library compiled in batches of
+# GEARFEM_UNITY_BATCH, so that the headers and template instantiations they share are compiled
+# once per batch (validation/RESULTS.md, fresh set-up). A helper in an anonymous namespace is
+# then visible to the other files of its batch: give such helpers a name of their own, or put
+# them in a header.
+option(GEARFEM_UNITY "Compile each library in unity batches (faster clean builds)" ON)
+set(GEARFEM_UNITY_BATCH 8 CACHE STRING "Translation units per unity batch")
+
+function(gearfem_unity target)
+  if(GEARFEM_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${GEARFEM_UNITY_BATCH})
+  endif()
+endfunction()
+
 # gearfem_light_library(NAME SOURCES...): a module with no deal.II (Eigen only).
 function(gearfem_light_library name)
   add_library(${name} STATIC ${ARGN})
+  gearfem_unity(${name})
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/lib ${PROJECT_BINARY_DIR}/generated)
   target_compile_options(${name} PRIVATE -Wall -Wextra -Wno-unused-parameter)
   target_link_libraries(${name} PUBLIC Eigen3::Eigen)
@@ -72,6 +87,7 @@ endfunction()
 # gearfem_dealii_library(NAME SOURCES...): a module built on deal.II.
 function(gearfem_dealii_library name)
   add_library(${name} STATIC ${ARGN})
+  gearfem_unity(${name})
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/lib ${PROJECT_BINARY_DIR}/generated)
   target_compile_options(${name} PRIVATE -Wall -Wextra)
   gearfem_use_dealii(${name})

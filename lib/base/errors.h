@@ -67,6 +67,18 @@ namespace gearfem
     return s.str();
   }
 
+  /// `v` with `digits` significant digits, as std::ostream writes it by default.
+  inline std::string to_string_g(double v, int digits)
+  {
+    std::ostringstream s;
+    s.precision(digits);
+    s << v;
+    return s.str();
+  }
+
+  /// A length [m] as millimetre text for a message: "12.5 mm".
+  inline std::string mm_text(double metres) { return to_string_g(metres * 1e3) + " mm"; }
+
   /// Throw InputError unless lo <= v <= hi (inclusive); units are part of the text.
   inline void require_range(const std::string &parameter, double v, double lo, double hi,
                             const std::string &unit = "")

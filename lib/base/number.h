@@ -14,6 +14,9 @@
 
 namespace gearfem
 {
+  /// k modulo n in [0, n) for any sign of k (n > 0): a tooth or slice index.
+  inline int wrap_index(long k, long n) { return int(((k % n) + n) % n); }
+
   /// The allowed set that the messages of parse_double state.
   extern const char *const finite_number_text;
 

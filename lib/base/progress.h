@@ -6,6 +6,12 @@
 
 namespace gearfem
 {
+  /// Wall seconds since t0 on the steady clock.
+  inline double since(std::chrono::steady_clock::time_point t0)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
   class Progress
   {
   public:

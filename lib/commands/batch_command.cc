@@ -22,7 +22,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace batch_job
   {
     void declare(dealii::ParameterHandler &prm)
     {
@@ -141,10 +143,11 @@ namespace gearfem::commands
                  << std::endl;
         }
     }
-  } // namespace
+  } // namespace batch_job
 
   Command batch_command()
   {
+    using namespace batch_job;
     Command c;
     c.name        = "batch";
     c.summary     = "the solve chain over the designs of a study (MPI, restartable): batch.csv, batch.h5";

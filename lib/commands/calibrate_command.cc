@@ -30,7 +30,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace calibrate_job
   {
     namespace an = analytical;
     using units::pi;
@@ -133,10 +135,11 @@ namespace gearfem::commands
           << ") in " << r.table_seconds << " s: mesh_stiffness.h5, mesh_torque.h5, mesh_ste.h5, ste_table.csv\n";
       run_plot_script("plot_calibration.py", {ctx.output_dir.string()}, &out);
     }
-  } // namespace
+  } // namespace calibrate_job
 
   Command calibrate_command()
   {
+    using namespace calibrate_job;
     Command c;
     c.name        = "calibrate";
     c.summary     = "fit the analytical mesh model to FE STE (gearfem solve results) and write stiffness tables";

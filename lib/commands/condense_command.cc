@@ -20,7 +20,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace condense_job
   {
     void declare(dealii::ParameterHandler &prm)
     {
@@ -70,10 +72,11 @@ namespace gearfem::commands
           << " scenes), up to " << m << " candidates each; set-up " << c.setup_seconds << " s, build "
           << c.build_seconds << " s\n";
     }
-  } // namespace
+  } // namespace condense_job
 
   Command condense_command()
   {
+    using namespace condense_job;
     Command c;
     c.name        = "condense";
     c.summary     = "the condensed mesh cycle: FE once over the cycle, re-solved later in milliseconds per position";

@@ -14,7 +14,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace dynamics_job
   {
     namespace dyn = gearfem::dynamics;
 
@@ -54,10 +56,11 @@ namespace gearfem::commands
       io::write_table_file(h5, ctx.output_dir / "response.h5", {{"program", "gearfem dynamics"}});
       run_plot_script("plot_dynamics.py", {ctx.output_dir.string()}, ctx.out);
     }
-  } // namespace
+  } // namespace dynamics_job
 
   Command dynamics_command()
   {
+    using namespace dynamics_job;
     Command c;
     c.name = "dynamics";
     c.summary = "nonlinear gear-pair dynamics: time response, speed sweeps, spectra";

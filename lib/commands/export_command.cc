@@ -22,7 +22,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace export_job
   {
     void declare(dealii::ParameterHandler &prm)
     {
@@ -136,10 +138,11 @@ namespace gearfem::commands
         out << " " << w;
       out << "\n";
     }
-  } // namespace
+  } // namespace export_job
 
   Command export_command()
   {
+    using namespace export_job;
     Command c;
     c.name        = "export";
     c.summary     = "write STE and mesh-stiffness tables for ROSS, multibody codes (spline, TE) and force-law codes";

@@ -14,7 +14,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace gearbox_job
   {
     namespace gb = gearfem::gearbox;
 
@@ -69,10 +71,11 @@ namespace gearfem::commands
           << ", gearbox.csv, gearbox_life.csv, gearbox_sn.csv, gearbox.h5, scuffing_path.csv"
           << (study.source == gb::StressSource::fe ? ", fe_stresses.csv, fe/" : "") << "\n";
     }
-  } // namespace
+  } // namespace gearbox_job
 
   Command gearbox_command()
   {
+    using namespace gearbox_job;
     Command c;
     c.name = "gearbox";
     c.summary = "Gearbox rating: planetary/parallel stages, load spectrum, Miner life, AGMA 925 scuffing";

@@ -12,7 +12,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace helical_job
   {
     void declare(dealii::ParameterHandler &prm) { helical::declare_request(prm); }
 
@@ -58,10 +60,11 @@ namespace gearfem::commands
       if (!r.failure.empty())
         throw SolverError(r.failure + " (the " + std::to_string(r.results.size()) + " positions before it are written)");
     }
-  } // namespace
+  } // namespace helical_job
 
   Command helical_command()
   {
+    using namespace helical_job;
     Command c;
     c.name        = "helical";
     c.summary     = "a helical pair by face-width slicing on the condensed cycle of its transverse section";

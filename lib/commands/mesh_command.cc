@@ -22,7 +22,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace mesh_job
   {
     void declare(dealii::ParameterHandler &prm)
     {
@@ -179,10 +181,11 @@ namespace gearfem::commands
                        bodies.zoom[0], (ctx.output_dir / "gear2.msh").string(), bodies.zoom[1]},
                       &out);
     }
-  } // namespace
+  } // namespace mesh_job
 
   Command mesh_command()
   {
+    using namespace mesh_job;
     Command c;
     c.name        = "mesh";
     c.summary     = "gmsh meshes of both gears (gear1.msh, gear2.msh), quality report, mesh.png";

@@ -11,7 +11,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace optimise_job
   {
     /// Problem = tip relief: the FE model in the loop (lib/optimise/relief.h).
     void run_relief(dealii::ParameterHandler &prm, const RunContext &ctx)
@@ -60,10 +62,11 @@ namespace gearfem::commands
       out << "wrote " << (ctx.output_dir / "optimise.csv").string()
           << ", summary.md, curvature.csv, profiles.csv, optimum.prm\n";
     }
-  } // namespace
+  } // namespace optimise_job
 
   Command optimise_command()
   {
+    using namespace optimise_job;
     Command c;
     c.name    = "optimise";
     c.summary = "Profile optimisation: Koronaios 2021 B-spline tooth (min. curvature) or tip relief for min. STE (FE in the loop)";

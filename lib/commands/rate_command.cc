@@ -23,7 +23,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace rate_job
   {
     namespace an = gearfem::analytical;
 
@@ -133,10 +135,11 @@ namespace gearfem::commands
       print_stresses(out, rep, ri.torques);
       out << "wrote " << (ctx.output_dir / "rating.md").string() << ", rating.csv, mesh_cycle.csv\n";
     }
-  } // namespace
+  } // namespace rate_job
 
   Command rate_command()
   {
+    using namespace rate_job;
     Command c;
     c.name = "rate";
     c.summary = "ISO 6336 and AGMA 2101/908 ratings with every factor, plus analytical mesh stiffness";

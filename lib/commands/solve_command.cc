@@ -16,7 +16,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace solve_job
   {
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
@@ -39,10 +41,11 @@ namespace gearfem::commands
       if (!o.failure.empty())
         throw SolverError(o.failure);
     }
-  } // namespace
+  } // namespace solve_job
 
   Command solve_command()
   {
+    using namespace solve_job;
     Command c;
     c.name        = "solve";
     c.summary     = "loaded static contact over the mesh cycle: STE, mesh stiffness, load sharing, pressure, root stress";

@@ -23,7 +23,9 @@
 
 namespace gearfem::commands
 {
-  namespace
+  // Named, not anonymous: the library compiles in unity batches, where every command
+  // file has its own declare and run.
+  namespace tolerance_job
   {
     /// Thrown on ranks > 0 when rank 0 has failed and reports it: they leave without a message.
     struct LeaveQuietly
@@ -172,10 +174,11 @@ namespace gearfem::commands
       if (!failed.empty())
         ctx.outcome->exit_status = 4;
     }
-  } // namespace
+  } // namespace tolerance_job
 
   Command tolerance_command()
   {
+    using namespace tolerance_job;
     Command c;
     c.name        = "tolerance";
     c.summary     = "Monte Carlo tolerance study: deviations drawn within an ISO 1328-1 grade, each over the hunting cycle";

@@ -1,5 +1,6 @@
 // The condensed-cycle benchmark.
 #include "condensed/benchmark.h"
+#include "base/progress.h"
 
 #include "base/errors.h"
 #include "base/memory.h"
@@ -24,7 +25,6 @@ namespace gearfem::condensed
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
     solve::GearContactInput parse(const std::string &text)
     {

@@ -16,7 +16,6 @@ namespace gearfem::condensed
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
   } // namespace
 
   Resolver::Resolver(const CondensedCycle &cycle, const solve::GearContactInput &variant)

@@ -2,6 +2,7 @@
 // computed on demand by block solves of the factorised body and kept across positions, and
 // the elastic displacements they give.
 #include "contact/two_body.h"
+#include "base/progress.h"
 
 #include "base/errors.h"
 
@@ -19,10 +20,6 @@ namespace gearfem::contact
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
   } // namespace
 
   std::size_t TwoBodyContact::cached_columns(int body) const

@@ -2,6 +2,7 @@
 // bodies, slave selection, projection onto the master, segment-to-segment integration,
 // micro-geometry as a gap modification).
 #include "contact/two_body.h"
+#include "geometry/curve.h"
 
 #include "base/errors.h"
 
@@ -15,13 +16,10 @@
 
 namespace gearfem::contact
 {
+  using geometry::rotate;
+
   namespace
   {
-    Vec2 rotate(const Vec2 &v, double angle)
-    {
-      const double c = std::cos(angle), s = std::sin(angle);
-      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-    }
     /// Inverse rigid placement: pair frame -> body frame.
     Vec2 to_body(const geometry::Placement &p, const Vec2 &x)
     {

@@ -1,6 +1,7 @@
 // TwoBodyContact: the linearised contact problem g = g_hat + a q + W lambda on the current
 // candidates (Delassus operator from the flexibility cache), and the solution record.
 #include "contact/two_body.h"
+#include "geometry/curve.h"
 
 #include "base/errors.h"
 
@@ -15,13 +16,10 @@
 
 namespace gearfem::contact
 {
+  using geometry::rotate;
+
   namespace
   {
-    Vec2 rotate(const Vec2 &v, double angle)
-    {
-      const double c = std::cos(angle), s = std::sin(angle);
-      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-    }
 
     /// Merge the repeated universe indices of a row of force directions.
     void compress(std::vector<std::pair<int, double>> &row)

@@ -3,6 +3,7 @@
 // cutting. The search and gaps are in gap.cc, the flexibility cache in flexibility.cc, the
 // linearisation in linearise.cc.
 #include "contact/two_body.h"
+#include "base/progress.h"
 #include "contact/ncp.h"
 
 #include "base/errors.h"
@@ -20,10 +21,6 @@ namespace gearfem::contact
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
 
     /// The settle test of the geometric iteration, with its state: the last steps of q and
     /// lambda and the active set, and whether that set was unchanged over them.

@@ -1,5 +1,6 @@
 // Flank-load cases on a meshed gear body (ISO 6336-3 tip loading).
 #include "fem/tooth_load.h"
+#include "base/progress.h"
 #include "base/units.h"
 
 #include "base/errors.h"
@@ -13,10 +14,6 @@ namespace gearfem::fem
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
     using units::pi;
   } // namespace
 

@@ -18,7 +18,6 @@ namespace gearfem::geometry
       return R;
     }
     /// J v: v turned by +90 degrees.
-    Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
     double cross(const Vec2 &a, const Vec2 &b) { return a.x() * b.y() - a.y() * b.x(); }
 
     /// Rack displacement s and its first two derivatives for a rack curve P(t):

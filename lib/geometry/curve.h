@@ -3,12 +3,22 @@
 // No deal.II types: this is the light layer.
 #include <Eigen/Core>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
 namespace gearfem::geometry
 {
   using Vec2 = Eigen::Vector2d;
+
+  /// v turned by +90 degrees.
+  inline Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
+  /// v turned by `angle` [rad] about the origin, counter-clockwise.
+  inline Vec2 rotate(const Vec2 &v, double angle)
+  {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+  }
 
   /// A smooth plane curve p(t), t in [t_begin(), t_end()], with exact first and second
   /// derivatives (third where the generator needs it).

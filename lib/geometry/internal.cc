@@ -15,7 +15,6 @@ namespace gearfem::geometry
     using closed_form::inv;
     using units::pi;
 
-    std::string mm(double v) { return to_string_g(v * 1e3) + " mm"; }
 
     LoaPoint make_point(const InternalMesh &m, const std::string &name, double g)
     {
@@ -122,16 +121,16 @@ namespace gearfem::geometry
                          internal_center_distance_from_shifts(mod, al, in.z1, in.z2, in.x1, in.x2);
     const double c   = (m.rb2 - m.rb1) / m.a;
     if (!(c < 1.0))
-      throw InputError("Pair/Centre distance", mm(m.a), "> r_b2 - r_b1 = " + mm(m.rb2 - m.rb1),
+      throw InputError("Pair/Centre distance", mm_text(m.a), "> r_b2 - r_b1 = " + mm_text(m.rb2 - m.rb1),
                        "no line of action below the difference of the base radii");
     m.alpha_w = std::acos(c);
     m.rw1     = m.rb1 / c;
     m.rw2     = m.rb2 / c;
     m.T1T2    = m.a * std::sin(m.alpha_w);
     if (!(in.tip_radius1 > m.rb1))
-      throw InputError(P + "Tip diameter", mm(2 * in.tip_radius1), "> base diameter " + mm(2 * m.rb1));
+      throw InputError(P + "Tip diameter", mm_text(2 * in.tip_radius1), "> base diameter " + mm_text(2 * m.rb1));
     if (!(in.tip_radius2 > m.rb2))
-      throw InputError(R + "Tip diameter", mm(2 * in.tip_radius2), "> base diameter " + mm(2 * m.rb2),
+      throw InputError(R + "Tip diameter", mm_text(2 * in.tip_radius2), "> base diameter " + mm_text(2 * m.rb2),
                        "the ring's teeth are involutes only outside its base circle");
 
     // Path of contact: starts where the ring tip circle cuts the line of action (nearer
@@ -174,12 +173,12 @@ namespace gearfem::geometry
     InterferenceDiagnosis d = diagnosis("involute interference", m.point("A").g, "m");
     const double limit      = std::hypot(m.rb2, m.T1T2); // |O2 T1|
     d.parameter             = m.in.ring_name + "/Tip diameter";
-    d.value                 = mm(2 * m.in.tip_radius2);
-    d.allowed               = "> " + mm(2 * limit);
-    d.detail = "the ring tip circle cuts the line of action " + mm(-d.margin) +
+    d.value                 = mm_text(2 * m.in.tip_radius2);
+    d.allowed               = "> " + mm_text(2 * limit);
+    d.detail = "the ring tip circle cuts the line of action " + mm_text(-d.margin) +
                " inside T1 (the ring tip would meet the pinion below its base circle)";
     if (!d.interferes)
-      d.detail = "start of contact A lies " + mm(d.margin) + " beyond T1";
+      d.detail = "start of contact A lies " + mm_text(d.margin) + " beyond T1";
     return d;
   }
 
@@ -189,10 +188,10 @@ namespace gearfem::geometry
     const double gF   = std::sqrt(rF * rF - m.rb1 * m.rb1);
     InterferenceDiagnosis d = diagnosis("ring tip against the pinion fillet", m.point("A").g - gF, "m");
     d.parameter       = m.in.ring_name + "/Tip diameter";
-    d.value           = mm(2 * m.in.tip_radius2);
-    d.allowed         = ">= " + mm(2 * std::hypot(m.rb2, gF + m.T1T2));
-    d.detail          = "start of contact at pinion radius " + mm(m.point("A").r1) +
-                        ", pinion form radius r_Ff1 = " + mm(rF);
+    d.value           = mm_text(2 * m.in.tip_radius2);
+    d.allowed         = ">= " + mm_text(2 * std::hypot(m.rb2, gF + m.T1T2));
+    d.detail          = "start of contact at pinion radius " + mm_text(m.point("A").r1) +
+                        ", pinion form radius r_Ff1 = " + mm_text(rF);
     return d;
   }
 
@@ -205,10 +204,10 @@ namespace gearfem::geometry
                           free;
     InterferenceDiagnosis d = diagnosis("pinion tip against the ring fillet", rhoF - rhoE, "m");
     d.parameter       = m.in.pinion_name + "/Tip diameter";
-    d.value           = mm(2 * m.in.tip_radius1);
-    d.allowed         = m.in.form_radius2 > 0.0 ? "<= " + mm(2 * std::hypot(m.rb1, rhoF - m.T1T2)) : "any";
-    d.detail          = "end of contact at ring radius " + mm(m.point("E").r2) +
-                        (m.in.form_radius2 > 0.0 ? ", ring form radius r_Ff2 = " + mm(m.in.form_radius2) : "");
+    d.value           = mm_text(2 * m.in.tip_radius1);
+    d.allowed         = m.in.form_radius2 > 0.0 ? "<= " + mm_text(2 * std::hypot(m.rb1, rhoF - m.T1T2)) : "any";
+    d.detail          = "end of contact at ring radius " + mm_text(m.point("E").r2) +
+                        (m.in.form_radius2 > 0.0 ? ", ring form radius r_Ff2 = " + mm_text(m.in.form_radius2) : "");
     return d;
   }
 
@@ -221,10 +220,10 @@ namespace gearfem::geometry
       c = std::min(c, m.clearance2);
     InterferenceDiagnosis d = diagnosis("tip clearance", c, "m");
     d.parameter = "Pair/Centre distance";
-    d.value     = mm(m.a);
+    d.value     = mm_text(m.a);
     d.allowed   = "a value that leaves both tip clearances positive";
-    d.detail    = "pinion tip to ring root " + mm(m.clearance1) + ", ring tip to pinion root " +
-               mm(m.clearance2);
+    d.detail    = "pinion tip to ring root " + mm_text(m.clearance1) + ", ring tip to pinion root " +
+               mm_text(m.clearance2);
     return d;
   }
 

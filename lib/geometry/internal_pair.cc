@@ -12,7 +12,6 @@ namespace gearfem::geometry
 {
   namespace
   {
-    std::string mm(double v) { return to_string_g(v / units::mm) + " mm"; }
 
     InternalMeshInput mesh_input(const ToothProfile &pinion, const InternalToothProfile &ring, double a)
     {
@@ -29,7 +28,7 @@ namespace gearfem::geometry
       in.center_distance = a;
       const double mr = ring.parameters().module, mp = p.rack.module;
       if (std::abs(mr - mp) > 1e-12 * mp)
-        throw InputError(ring.parameters().name + "/Module", mm(mr), "the pinion's module " + mm(mp));
+        throw InputError(ring.parameters().name + "/Module", mm_text(mr), "the pinion's module " + mm_text(mp));
       const double ar = ring.parameters().pressure_angle, ap = p.rack.pressure_angle;
       if (std::abs(ar - ap) > 1e-12)
         throw InputError(ring.parameters().name + "/Pressure angle", to_string_g(ar / units::deg) + " deg",
@@ -54,7 +53,7 @@ namespace gearfem::geometry
           d.raise();
       }
     if (mesh_.contact_ratio < 1.0)
-      throw InputError(ring_.parameters().name + "/Tip diameter", mm(2 * mesh_.in.tip_radius2),
+      throw InputError(ring_.parameters().name + "/Tip diameter", mm_text(2 * mesh_.in.tip_radius2),
                        "a value giving a transverse contact ratio >= 1",
                        "contact ratio " + to_string_g(mesh_.contact_ratio) + " < 1");
     // The working-circle thicknesses of the outlines themselves (the pinion's includes its
@@ -66,7 +65,7 @@ namespace gearfem::geometry
     if (std::abs(jt_) < 1e-13)
       jt_ = 0.0;
     if (jt_ < -1e-12)
-      throw InputError("Pair/Centre distance", mm(mesh_.a), "a value with backlash >= 0",
+      throw InputError("Pair/Centre distance", mm_text(mesh_.a), "a value with backlash >= 0",
                        "negative backlash: circumferential backlash " + to_string_g(jt_ / units::um) + " um");
     phase1_ = -sw1 / (2 * mesh_.rw1);
     phase2_ = sw2 / (2 * mesh_.rw2);

@@ -21,14 +21,12 @@ namespace gearfem::geometry
       return R;
     }
     /// Counter-clockwise rotation by 90 deg.
-    Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
     double cross(const Vec2 &a, const Vec2 &b) { return a.x() * b.y() - a.y() * b.x(); }
     /// e(phi) = (sin phi, cos phi): unit vector at angle phi clockwise from +y; e' = de/dphi.
     Vec2 e(double phi) { return Vec2(std::sin(phi), std::cos(phi)); }
     Vec2 ep(double phi) { return Vec2(std::cos(phi), -std::sin(phi)); }
     /// Polar angle measured clockwise from +y.
     double cw_angle(const Vec2 &p) { return std::atan2(p.x(), p.y()); }
-    std::string mm(double v) { return to_string_g(v * 1e3) + " mm"; }
     /// Generating angle at which the envelope's contact on the cutter rounding reaches the
     /// flank tangent point (flank normal n_form, cutter frame), from t_root; NaN if none.
     double fillet_end(const ShaperEnvelopeCurve &probe, const Vec2 &n_form, double t_root, double k)
@@ -188,7 +186,7 @@ namespace gearfem::geometry
     if (!(ra2 > rb2))
       throw InputError(P + "Addendum coefficient", to_string_g(g.addendum),
                        "< " + to_string_g(r2 / m - g.profile_shift + g.tip_shortening - rb2 / m),
-                       "the tip (inner) circle " + mm(2 * ra2) + " lies inside the base circle " + mm(2 * rb2));
+                       "the tip (inner) circle " + mm_text(2 * ra2) + " lies inside the base circle " + mm_text(2 * rb2));
     if (!(std::sqrt(ra2 * ra2 - rb2 * rb2) > T0T2))
       throw InputError(P + "Cutter teeth", std::to_string(c.teeth), "fewer teeth (or a smaller ring shift)",
                        "involute interference in generation: the ring tip circle cuts the generating "
@@ -196,7 +194,7 @@ namespace gearfem::geometry
                        "relieve the ring tip below the involute (not modelled)");
     if (!(rF2 > ra2))
       throw InputError(P + "Cutter tip radius coefficient", to_string_g(c.tip_radius), "a smaller value",
-                       "the generated fillet reaches the tip circle (form radius " + mm(rF2) + ")");
+                       "the generated fillet reaches the tip circle (form radius " + mm_text(rF2) + ")");
     t.radii_.base = rb2, t.radii_.reference = r2, t.radii_.tip = ra2, t.radii_.root = rf2;
     t.radii_.form = rF2, t.radii_.tip_form = ra2, t.radii_.relief_start = ra2;
 
@@ -261,8 +259,8 @@ namespace gearfem::geometry
   double InternalToothProfile::thickness_at_radius(double r) const
   {
     if (!(r >= radii_.tip * (1 - 1e-12) && r <= radii_.root * (1 + 1e-12)))
-      throw InputError(gear_.name + "/thickness radius", mm(r),
-                       "[" + mm(radii_.tip) + ", " + mm(radii_.root) + "]");
+      throw InputError(gear_.name + "/thickness radius", mm_text(r),
+                       "[" + mm_text(radii_.tip) + ", " + mm_text(radii_.root) + "]");
     const ProfileSegment &s = r <= radii_.form ? segments_[2] : segments_[1];
     const double rr = std::clamp(r, std::min(s.start().norm(), s.end().norm()),
                                  std::max(s.start().norm(), s.end().norm()));

@@ -22,12 +22,6 @@ namespace gearfem::geometry
 
   namespace
   {
-    Vec2 rotate(const Vec2 &p, double a)
-    {
-      return Vec2(std::cos(a) * p.x() - std::sin(a) * p.y(),
-                  std::sin(a) * p.x() + std::cos(a) * p.y());
-    }
-    std::string mm(double v) { return to_string_g(v / units::mm) + " mm"; }
     /// Circular tooth thickness on the reference circle with profile shift and thickness
     /// allowance [m] (module m and pressure angle alpha of the pair).
     double reference_thickness(const GearParameters &g, double m, double alpha)
@@ -110,7 +104,7 @@ namespace gearfem::geometry
   {
     const auto &p1 = g1_.parameters(), &p2 = g2_.parameters();
     if (p1.rack.module != p2.rack.module)
-      throw InputError("Rack/Module", mm(p2.rack.module), mm(p1.rack.module),
+      throw InputError("Rack/Module", mm_text(p2.rack.module), mm_text(p1.rack.module),
                        "both gears of a pair need the same module");
     if (p1.rack.pressure_angle != p2.rack.pressure_angle)
       throw InputError("Rack/Pressure angle", to_string_g(p2.rack.pressure_angle / units::deg),
@@ -130,7 +124,7 @@ namespace gearfem::geometry
     {
       const double inv0 = inv(alpha) + (s1 + s2 - p) / (m * (z1 + z2));
       if (!(inv0 > 0))
-        throw InputError(p1.name + "/Thickness allowance", mm(p1.thickness_allowance), "smaller",
+        throw InputError(p1.name + "/Thickness allowance", mm_text(p1.thickness_allowance), "smaller",
                          "the teeth are too thin to mesh at any centre distance");
       a0_ = (rb1 + rb2) / std::cos(closed_form::inv_inverse(inv0));
     }
@@ -138,12 +132,12 @@ namespace gearfem::geometry
            pair.center_distance :
            center_distance_from_shifts(m, alpha, z1, z2, p1.profile_shift, p2.profile_shift);
     if (!involute_ && std::abs(a_ - (r01 + r02)) > 1e-9)
-      throw InputError(a_name, mm(a_), mm(r01 + r02),
+      throw InputError(a_name, mm_text(a_), mm_text(r01 + r02),
                        "B-spline pairs run at the reference centre distance");
     const double a_min = std::max({rb1 + rb2, ra1 + g2_.radii().root, ra2 + g1_.radii().root});
     const double a_max = ra1 + ra2;
     if (!(a_ >= a_min && a_ < a_max && a_ > rb1 + rb2))
-      throw InputError(a_name, mm(a_), "[" + mm(a_min) + ", " + mm(a_max) + ")",
+      throw InputError(a_name, mm_text(a_), "[" + mm_text(a_min) + ", " + mm_text(a_max) + ")",
                        "the centre distance must leave tip clearance and overlap the tip circles");
     alpha_w_ = std::acos((rb1 + rb2) / a_);
     rw1_     = rb1 / std::cos(alpha_w_);
@@ -176,7 +170,7 @@ namespace gearfem::geometry
       jt_ = 0.0;
     jn_ = jt_ * std::cos(alpha_w_);
     if (jt_ < -1e-12)
-      throw InputError(a_name, mm(a_), ">= " + mm(a0_) + " (zero backlash)",
+      throw InputError(a_name, mm_text(a_), ">= " + mm_text(a0_) + " (zero backlash)",
                        "negative backlash: circumferential backlash " + to_string_g(jt_ / units::um) +
                          " um");
     phase1_ = -sw1 / (2 * rw1_);
@@ -253,7 +247,7 @@ namespace gearfem::geometry
                            "a flank that reaches the start of active profile",
                            "tip-to-fillet interference: the tip of " + p2.name +
                              " meets " + p1.name + " below its flank (form radius " +
-                             mm(g1_.radii().form) + ")");
+                             mm_text(g1_.radii().form) + ")");
         if (std::isnan(phiE))
           phiE = phi_of(path_.back(), path_.back().tl);
         // One contact point per tooth pair: the pinion angle must change one way along the
@@ -273,7 +267,7 @@ namespace gearfem::geometry
                   if (trend * step < 0)
                     throw InputError("Rack/Control points", "the path of contact of " + p1.name + " and " + p2.name,
                                      "a path along which the contact point moves one way",
-                                     "the contact reverses at r1 = " + mm(q.norm()) +
+                                     "the contact reverses at r1 = " + mm_text(q.norm()) +
                                        ": several points of one flank touch at once, which the path model "
                                        "(one contact point per tooth pair) does not follow");
                   trend = step;
@@ -285,7 +279,7 @@ namespace gearfem::geometry
     eps_alpha_ = (gE - gA) / pb;
     if (eps_alpha_ < 1.0)
       throw InputError(pair.center_distance > 0 && a_ > a0_ ? a_name : std::string("Rack/Addendum coefficient"),
-                       pair.center_distance > 0 && a_ > a0_ ? mm(a_) : to_string_g(p1.rack.addendum),
+                       pair.center_distance > 0 && a_ > a0_ ? mm_text(a_) : to_string_g(p1.rack.addendum),
                        "a value giving a transverse contact ratio >= 1",
                        "contact ratio " + to_string_g(eps_alpha_) + " < 1");
 
@@ -322,12 +316,12 @@ namespace gearfem::geometry
       throw InputError(p2.name + "/Tip shortening coefficient", to_string_g(p2.tip_shortening),
                        k_min(p2, ra2, std::sqrt(T1T2 * T1T2 + rb2 * rb2)),
                        "tip-to-fillet interference: the tip of " + p2.name + " passes T1 by " +
-                         mm(-gA));
+                         mm_text(-gA));
     if (involute_ && gE > T1T2)
       throw InputError(p1.name + "/Tip shortening coefficient", to_string_g(p1.tip_shortening),
                        k_min(p1, ra1, std::sqrt(T1T2 * T1T2 + rb1 * rb1)),
                        "tip-to-fillet interference: the tip of " + p1.name + " passes T2 by " +
-                         mm(gE - T1T2));
+                         mm_text(gE - T1T2));
     const double rA1 = point("A").r1, rE2 = point("E").r2;
     auto check_active = [&](ToothProfile &g, const GearParameters &own, const GearParameters &mate,
                             double r_sap) {
@@ -339,7 +333,7 @@ namespace gearfem::geometry
                            ">= " + to_string_g(own.profile_shift + (u.radius - r_sap) / m) +
                              " (approximately)",
                            "undercut removes active profile of " + own.name + ": contact starts at r = " +
-                             mm(r_sap) + " but the undercut reaches r = " + mm(u.radius));
+                             mm_text(r_sap) + " but the undercut reaches r = " + mm_text(u.radius));
         }
       if (r_sap < g.radii().form * (1 - 1e-12))
         {
@@ -351,8 +345,8 @@ namespace gearfem::geometry
                            involute_ ? k_min(mate, ra_m, std::hypot(T1T2 - gF, rb_mate)) :
                                        std::string("a tip that keeps contact above the form circle"),
                          "tip-to-fillet interference: the tip of " + mate.name + " reaches r = " +
-                           mm(r_sap) + " on " + own.name + ", below its form circle r_Ff = " +
-                           mm(g.radii().form));
+                           mm_text(r_sap) + " on " + own.name + ", below its form circle r_Ff = " +
+                           mm_text(g.radii().form));
         }
     };
     check_active(g1_, p1, p2, rA1);
@@ -360,7 +354,7 @@ namespace gearfem::geometry
     for (int i : {1, 2})
       if (tip_clearance(i) < 0.1 * m)
         warnings_.push_back("warning [" + a_name + "]: tip clearance of gear " + std::to_string(i) +
-                            " is " + mm(tip_clearance(i)) + " (< 0.1 m)");
+                            " is " + mm_text(tip_clearance(i)) + " (< 0.1 m)");
   }
 
   Placement GearPair::placement(int i, double phi1) const

@@ -89,12 +89,6 @@ namespace gearfem::geometry
 
   namespace
   {
-    Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
-    Vec2 rotate(const Vec2 &p, double a)
-    {
-      return Vec2(std::cos(a) * p.x() - std::sin(a) * p.y(),
-                  std::sin(a) * p.x() + std::cos(a) * p.y());
-    }
 
     /// Tip relief as a rotation of the generated involute about the gear centre by
     /// gamma = delta(xi)/rb: for an involute this is a normal offset by exactly delta,

@@ -17,7 +17,6 @@ namespace gearfem::geometry
 {
   namespace
   {
-    Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
 
     /// Cutter tips whose arc ends this close to u = p/2 become full-round (1e-3 m).
     double full_round_tolerance(double half_pitch) { return 1e-3 * (2 * half_pitch / units::pi); }

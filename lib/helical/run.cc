@@ -16,7 +16,6 @@ namespace gearfem::helical
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
   } // namespace
 
   SlicingOptions slicing_options(solve::GearContactInput &in, const HelixInput &hx, const post::PostOptions &post)

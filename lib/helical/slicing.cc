@@ -1,5 +1,7 @@
 // The helical pair on the condensed cycle of its transverse section (helical/slicing.h).
 #include "helical/slicing.h"
+#include "base/number.h"
+#include "base/progress.h"
 #include "helical/slicing_detail.h"
 
 #include "contact/ncp.h"
@@ -18,8 +20,6 @@ namespace gearfem::helical
   namespace
   {
     using Clock = std::chrono::steady_clock;
-    double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-    int mod(long a, long n) { return int(((a % n) + n) % n); }
     long floor_div(long a, long n) { return a >= 0 ? a / n : -((-a + n - 1) / n); }
     /// Candidates first taken into the coupled problem: loaded at the build, or within this
     /// gap of contact there; the others join where they would penetrate.
@@ -68,7 +68,7 @@ namespace gearfem::helical
             {
               Sub s;
               s.slice  = k;
-              s.g      = std::size_t(mod(gi, G));
+              s.g      = std::size_t(wrap_index(gi, G));
               s.wrap   = floor_div(gi, G);
               s.weight = w / N;
               out.push_back(std::move(s));
@@ -213,7 +213,7 @@ namespace gearfem::helical
 
   long SlicedPair::pair_key(int t1, int t2, long wrap) const
   {
-    return long(mod(t1 - wrap, z_[0])) * z_[1] + mod(t2 + wrap, z_[1]);
+    return long(wrap_index(t1 - wrap, z_[0])) * z_[1] + wrap_index(t2 + wrap, z_[1]);
   }
 
   void SlicedPair::prepare(Sub &u, double load) const

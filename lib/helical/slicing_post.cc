@@ -2,6 +2,7 @@
 // its 2-D section at the sub-slice's load per unit face width (post's evaluation, root stress
 // from the stored influence coefficients), then the slices, the contact lines and the pair.
 #include "helical/slicing.h"
+#include "base/number.h"
 #include "helical/slicing_detail.h"
 
 #include "base/errors.h"
@@ -13,7 +14,6 @@ namespace gearfem::helical
 {
   namespace
   {
-    int mod(long a, long n) { return int(((a % n) + n) % n); }
   } // namespace
 
   void SlicedPair::root_stresses(HelicalResult &h, const std::map<long, Eigen::VectorXd> &tau,
@@ -148,7 +148,7 @@ namespace gearfem::helical
         sr.p_max += w * e.result.p_max;
         for (const auto &tp : e.result.pairs)
           {
-            const long key = long(mod(tp.pinion_tooth - u.wrap, z_[0])) * z_[1] + mod(tp.gear_tooth + u.wrap, z_[1]);
+            const long key = long(wrap_index(tp.pinion_tooth - u.wrap, z_[0])) * z_[1] + wrap_index(tp.gear_tooth + u.wrap, z_[1]);
             for (int g = 0; g < 2; ++g)
               sig[g].try_emplace(key, Eigen::VectorXd::Zero(N)).first->second[u.slice] +=
                 w * (g == 0 ? tp.root_stress_pinion : tp.root_stress_gear);

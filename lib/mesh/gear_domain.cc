@@ -17,10 +17,6 @@ namespace gearfem::mesh
 {
   namespace
   {
-    int mod(int k, int z) { return ((k % z) + z) % z; }
-    /// Largest h_coast / h_contact ratio meshed without a transition at the coast tip corner.
-    /// (Measured on the Parker gear: 2.5 and 2.7 mesh, 3.3 and 4 leave triangles.)
-    constexpr double coast_jump_limit = 2.0;
     using units::pi;
   } // namespace
 
@@ -122,15 +118,15 @@ namespace gearfem::mesh
       {
         if (p.model == GearMeshParameters::Model::sector)
           for (int k : model_teeth(p, z))
-            s.insert(mod(k, z));
+            s.insert(wrap_index(k, z));
         else
           for (int k = -2; k <= 2; ++k)
-            s.insert(mod(k, z));
+            s.insert(wrap_index(k, z));
       }
     else
       {
         for (const int k : parse_int_list("Mesh/Fine teeth", p.fine_teeth))
-          s.insert(mod(k, z));
+          s.insert(wrap_index(k, z));
       }
     return {s.begin(), s.end()};
   }
@@ -279,16 +275,16 @@ namespace gearfem::mesh
     const double w = max_tooth_angle_step(tooth);
     for (int k = 0; k < z; ++k)
       {
-        const double step = angles[std::size_t(k)] - angles[std::size_t(mod(k - 1, z))];
+        const double step = angles[std::size_t(k)] - angles[std::size_t(wrap_index(k - 1, z))];
         if (w == 0 && step != 0)
           throw InputError(entry, "tooth " + std::to_string(k) + " turned " + to_string_g(step * 1e6) +
-                                    " urad against tooth " + std::to_string(mod(k - 1, z)),
+                                    " urad against tooth " + std::to_string(wrap_index(k - 1, z)),
                            "equal offsets on every tooth",
                            "the outline has no root land arc: the fillets of neighbouring teeth meet at a "
                            "point, where turned teeth would overlap or leave a gap");
         if (std::abs(step) > w)
           throw InputError(entry, "tooth " + std::to_string(k) + " turned " + to_string_g(step * 1e6) +
-                                    " urad against tooth " + std::to_string(mod(k - 1, z)),
+                                    " urad against tooth " + std::to_string(wrap_index(k - 1, z)),
                            "within +-" + to_string_g(w * 1e6) + " urad (half a root land)",
                            "neighbouring teeth meet on their root lands, which keep at least half their length");
       }
@@ -434,11 +430,11 @@ namespace gearfem::mesh
     check_tooth_angles(tooth, p.tooth_angles, "tooth placement offsets of the " + std::to_string(z) + "-tooth gear");
     const bool turned = !p.tooth_angles.empty() && max_tooth_angle_step(tooth) > 0;
     const std::vector<int> teeth = model_teeth(p, z);
-    const auto delta = [&](int k) { return p.tooth_angles.empty() ? 0.0 : p.tooth_angles[std::size_t(mod(k, z))]; };
+    const auto delta = [&](int k) { return p.tooth_angles.empty() ? 0.0 : p.tooth_angles[std::size_t(wrap_index(k, z))]; };
     for (const int k : teeth)
       {
         const double angle = 2.0 * pi * k / z + delta(k);
-        const bool is_fine = fine_set.count(mod(k, z)) > 0;
+        const bool is_fine = fine_set.count(wrap_index(k, z)) > 0;
         for (std::size_t s = 0; s < segs.size(); ++s)
           {
             const auto &sg = segs[s];
@@ -447,8 +443,8 @@ namespace gearfem::mesh
             piece.t0          = sg.t0;
             piece.t1          = sg.t1;
             const auto code   = segment_code(sg.type, sg.side);
-            piece.boundary_id = boundary::tooth_id(mod(k, z), code);
-            piece.tooth       = mod(k, z);
+            piece.boundary_id = boundary::tooth_id(wrap_index(k, z), code);
+            piece.tooth       = wrap_index(k, z);
             piece.segment     = int(s);
             if (turned && (s == 0 || s + 1 == segs.size()))
               {

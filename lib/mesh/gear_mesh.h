@@ -11,6 +11,10 @@
 
 namespace gearfem::mesh
 {
+  /// Largest h_coast / h_contact ratio meshed without a transition at the coast tip corner
+  /// (measured on the Parker gear: 2.5 and 2.7 mesh, 3.3 and 4 leave triangles).
+  inline constexpr double coast_jump_limit = 2.0;
+
   /// The `Mesh` section, in SI units.
   struct GearMeshParameters
   {

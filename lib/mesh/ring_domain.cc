@@ -17,11 +17,6 @@ namespace gearfem::mesh
   namespace
   {
     using units::pi;
-    int mod(int k, int z) { return ((k % z) + z) % z; }
-    std::string mm(double x) { return to_string_g(x * 1e3) + " mm"; }
-    /// Largest h_coast / h_contact ratio meshed without a transition at the coast tip corner
-    /// (the rule of gear_domain: Blossom recombination leaves triangles beyond it).
-    constexpr double coast_jump_limit = 2.0;
     /// Largest cell count of one ring mesh (the limit of gear_domain: one machine's memory).
     constexpr double max_cells = 2e6;
 
@@ -52,21 +47,21 @@ namespace gearfem::mesh
       {"Mesh/Ring/h_corner", h_corner},   {"Mesh/Ring/h_tooth", h_tooth}};
     for (const auto &[entry, h] : sizes)
       if (!(h >= 0 && h <= h_body))
-        throw InputError(entry, mm(h), "[0, h_body = " + mm(h_body) + "] (0: automatic where allowed)");
+        throw InputError(entry, mm_text(h), "[0, h_body = " + mm_text(h_body) + "] (0: automatic where allowed)");
     if (!(rim_thickness >= 0))
-      throw InputError("Mesh/Ring/Rim thickness", mm(rim_thickness), ">= 0 (0: from the backup ratio)");
+      throw InputError("Mesh/Ring/Rim thickness", mm_text(rim_thickness), ">= 0 (0: from the backup ratio)");
     if (!(backup_ratio >= 0))
       throw InputError("Mesh/Ring/Backup ratio", to_string_g(backup_ratio), ">= 0 (0: 1.2)");
     if (rim_thickness > 0 && backup_ratio > 0)
       throw InputError("Mesh/Ring/Backup ratio", to_string_g(backup_ratio),
-                       "0 when Mesh/Ring/Rim thickness is given (" + mm(rim_thickness) + ")",
+                       "0 when Mesh/Ring/Rim thickness is given (" + mm_text(rim_thickness) + ")",
                        "give the rim either as a thickness or as a backup ratio");
     if (bolts < 0)
       throw InputError("Mesh/Ring/Bolts", std::to_string(bolts), ">= 0 (0: outer circle clamped all round)");
     if (!std::isfinite(bolt_phase))
       throw InputError("Mesh/Ring/Bolt phase", to_string_g(bolt_phase), "a finite angle");
     if (!(bolt_width >= 0))
-      throw InputError("Mesh/Ring/Bolt width", mm(bolt_width), ">= 0 (0: a tenth of the bolt spacing)");
+      throw InputError("Mesh/Ring/Bolt width", mm_text(bolt_width), ">= 0 (0: a tenth of the bolt spacing)");
     if (spline_samples < 2)
       throw InputError("Mesh/Ring/Spline samples", std::to_string(spline_samples), ">= 2");
     if (fine_teeth != "auto")
@@ -121,13 +116,13 @@ namespace gearfem::mesh
     std::set<int> s;
     if (p.fine_teeth != "auto")
       for (const int k : parse_int_list("Mesh/Ring/Fine teeth", p.fine_teeth))
-        s.insert(mod(k, z));
+        s.insert(wrap_index(k, z));
     else if (p.model == RingMeshParameters::Model::sector)
       for (const int k : ring_model_teeth(p, z))
-        s.insert(mod(k, z));
+        s.insert(wrap_index(k, z));
     else
       for (int k = -2; k <= 2; ++k)
-        s.insert(mod(k, z));
+        s.insert(wrap_index(k, z));
     return {s.begin(), s.end()};
   }
 
@@ -155,7 +150,7 @@ namespace gearfem::mesh
       const double spacing = 2 * pi * R / p.bolts;
       const double width   = p.bolt_width > 0 ? p.bolt_width : 0.1 * spacing;
       if (!(width < 0.5 * spacing))
-        throw InputError("Mesh/Ring/Bolt width", mm(width), "< half the bolt spacing = " + mm(0.5 * spacing),
+        throw InputError("Mesh/Ring/Bolt width", mm_text(width), "< half the bolt spacing = " + mm_text(0.5 * spacing),
                          "the support arcs of neighbouring bolts would touch");
       return 0.5 * width / R;
     }
@@ -193,22 +188,22 @@ namespace gearfem::mesh
     {
       const double m = ring.parameters().module;
       if (p.h_contact > m)
-        throw InputError("Mesh/Ring/h_contact", mm(p.h_contact), "<= module = " + mm(m),
+        throw InputError("Mesh/Ring/h_contact", mm_text(p.h_contact), "<= module = " + mm_text(m),
                          "fewer than ~2 elements along the flank do not resolve the tooth");
       if (p.h_fillet > m)
-        throw InputError("Mesh/Ring/h_fillet", mm(p.h_fillet), "<= module = " + mm(m),
+        throw InputError("Mesh/Ring/h_fillet", mm_text(p.h_fillet), "<= module = " + mm_text(m),
                          "fewer than ~2 elements along the fillet do not resolve the tooth");
       if (p.h_tooth > m)
-        throw InputError("Mesh/Ring/h_tooth", mm(p.h_tooth), "<= module = " + mm(m) + " (0: automatic)");
+        throw InputError("Mesh/Ring/h_tooth", mm_text(p.h_tooth), "<= module = " + mm_text(m) + " (0: automatic)");
       // A corner grading finer than h_contact/50 hangs gmsh's size-field meshing (gear_domain).
       if (p.h_corner > 0 && p.h_corner < contact_size(p, m) / 50)
-        throw InputError("Mesh/Ring/h_corner", mm(p.h_corner),
-                         "0 (h_contact/4) or >= h_contact/50 = " + mm(contact_size(p, m) / 50));
+        throw InputError("Mesh/Ring/h_corner", mm_text(p.h_corner),
+                         "0 (h_contact/4) or >= h_contact/50 = " + mm_text(contact_size(p, m) / 50));
       const double rim = ring_rim_thickness(ring, p);
       if (!(rim >= p.h_fillet))
         throw InputError(p.rim_thickness > 0 ? "Mesh/Ring/Rim thickness" : "Mesh/Ring/Backup ratio",
-                         p.rim_thickness > 0 ? mm(rim) : to_string_g(rim / (ring.radii().root - ring.radii().tip)),
-                         "a rim of at least h_fillet = " + mm(p.h_fillet), "one element through the rim");
+                         p.rim_thickness > 0 ? mm_text(rim) : to_string_g(rim / (ring.radii().root - ring.radii().tip)),
+                         "a rim of at least h_fillet = " + mm_text(p.h_fillet), "one element through the rim");
       // Estimated cells: the rim at h_body plus each tooth (h_t x half a pitch) at its size.
       const double rf = ring.radii().root, R = rf + rim, h_t = rf - ring.radii().tip;
       const double z = ring.parameters().teeth, tooth_area = h_t * pi * m / 2;
@@ -220,7 +215,7 @@ namespace gearfem::mesh
         throw InputError(p.model == RingMeshParameters::Model::full_ring ? "Mesh/Ring/Model" : "Mesh/Ring/h_body",
                          p.model == RingMeshParameters::Model::full_ring ?
                            "full ring (" + std::to_string(int(z)) + " teeth)" :
-                           mm(p.h_body),
+                           mm_text(p.h_body),
                          "a mesh of <= 2e6 cells (estimated: " + to_string_g(estimate) + ")",
                          "use Model = sector, or larger h_body/h_tooth");
     }
@@ -292,7 +287,7 @@ namespace gearfem::mesh
       std::vector<BoundaryPiece> out;
       for (const int k : ring_model_teeth(p, z))
         {
-          const bool is_fine = fine_set.count(mod(k, z)) > 0;
+          const bool is_fine = fine_set.count(wrap_index(k, z)) > 0;
           for (std::size_t s = 0; s < segs.size(); ++s)
             {
               const auto &sg = segs[s];
@@ -300,8 +295,8 @@ namespace gearfem::mesh
               piece.curve       = ParametricCurve::from(sg.curve, 2 * pi * k / z);
               piece.t0          = sg.t0;
               piece.t1          = sg.t1;
-              piece.boundary_id = boundary::tooth_id(mod(k, z), segment_code(sg.type, sg.side));
-              piece.tooth       = mod(k, z);
+              piece.boundary_id = boundary::tooth_id(wrap_index(k, z), segment_code(sg.type, sg.side));
+              piece.tooth       = wrap_index(k, z);
               piece.segment     = int(s);
               const bool flank_like = sg.type == SegmentType::flank || sg.type == SegmentType::tip ||
                                       sg.type == SegmentType::tip_rounding;

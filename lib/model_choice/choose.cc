@@ -8,7 +8,7 @@ namespace gearfem::model_choice
 {
   namespace
   {
-    std::string mm(double v)
+    std::string mm_3_text(double v)
     {
       std::ostringstream o;
       o.precision(3);
@@ -168,7 +168,7 @@ namespace gearfem::model_choice
           driver += "; finer than the module alone asks (m/" + std::to_string(int(std::lround(m / c.ladder_h_contact))) +
                     ") for the light load: the p-p estimate is also taken as " + pc(pp_per_half_width) +
                     " (h / a)^2, with the Hertz half-width a = " +
-                    mm(half_width) + " at the lowest torque (h / a = " + g3(h / half_width) +
+                    mm_3_text(half_width) + " at the lowest torque (h / a = " + g3(h / half_width) +
                     "; 2 a / h elements across the contact patch), and the companion is the module rung's";
       }
     const bool fillet_matters = stress_asked;
@@ -176,7 +176,7 @@ namespace gearfem::model_choice
       {
         h = c.flank_height;
         c.ladder_h_contact = std::min(c.ladder_h_contact, h);
-        driver = "the flank height " + mm(c.flank_height) +
+        driver = "the flank height " + mm_3_text(c.flank_height) +
                  " between the start of active profile and the form circle: a coarser contact element lets the "
                  "contact of the tooth entering mesh leak into its fillet (Siasos 2010 23/69: root stress 25-36 % "
                  "off at h_contact 0.25-0.4 mm)";
@@ -187,9 +187,9 @@ namespace gearfem::model_choice
       else
         g.h_contact = mesh::contact_size(g, m);
     if (fixed.h_contact)
-      why.push_back("h_contact " + mm(c.mesh[0].h_contact) + ": set in the input (Mesh/h_contact)");
+      why.push_back("h_contact " + mm_3_text(c.mesh[0].h_contact) + ": set in the input (Mesh/h_contact)");
     else
-      why.push_back("h_contact " + mm(h) + " (m/" + std::to_string(int(std::lround(m / h))) + "): " + driver);
+      why.push_back("h_contact " + mm_3_text(h) + " (m/" + std::to_string(int(std::lround(m / h))) + "): " + driver);
 
     // h_fillet: the root stress tolerance, else coarse.
     double hf = m / 8;
@@ -206,7 +206,7 @@ namespace gearfem::model_choice
     for (auto &g : c.mesh)
       if (!fixed.h_fillet)
         g.h_fillet = std::min(hf, g.h_body);
-    why.push_back("h_fillet " + mm(c.mesh[0].h_fillet) + ": " +
+    why.push_back("h_fillet " + mm_3_text(c.mesh[0].h_fillet) + ": " +
                   (fixed.h_fillet ? std::string("set in the input (Mesh/h_fillet)") : fdriver));
     if (!fixed.h_corner)
       for (auto &g : c.mesh)
@@ -245,9 +245,9 @@ namespace gearfem::model_choice
         body_sized = body_sized || !fixed.h_body || !fixed.h_tooth;
       }
     if (body_sized)
-      why.push_back("h_body " + mm(c.mesh[0].h_body) + " / " + mm(c.mesh[1].h_body) + ", h_tooth " +
-                    mm(mesh::tooth_size(c.mesh[0], m)) + " / " +
-                    mm(mesh::tooth_size(c.mesh[1], pair.gear(2).parameters().rack.module)) +
+      why.push_back("h_body " + mm_3_text(c.mesh[0].h_body) + " / " + mm_3_text(c.mesh[1].h_body) + ", h_tooth " +
+                    mm_3_text(mesh::tooth_size(c.mesh[0], m)) + " / " +
+                    mm_3_text(mesh::tooth_size(c.mesh[1], pair.gear(2).parameters().rack.module)) +
                     " (pinion / gear; unless set in the input): the body and the unloaded teeth carry no "
                     "contact and no fillet peak; 1.5 m (at least six elements through the ring) and 0.8 m instead of "
                     "3 mm and 0.4 m moved the true errors of five pairs by at most 0.009 % (mean STE), 0.014 % (p-p) "

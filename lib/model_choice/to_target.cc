@@ -18,10 +18,6 @@ namespace gearfem::model_choice
     using Clock = std::chrono::steady_clock;
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-    double since(Clock::time_point t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
 
     /// The sizes of one level.
     struct Sizes
@@ -46,7 +42,7 @@ namespace gearfem::model_choice
       return o;
     }
 
-    std::string mm(double v)
+    std::string mm_3(double v)
     {
       std::ostringstream o;
       o << std::setprecision(3) << v * 1e3;
@@ -90,7 +86,7 @@ namespace gearfem::model_choice
       const auto t0     = Clock::now();
       if (options.out)
         *options.out << "model choice: " << role << " level " << o.levels.size() + 1 << ", h_contact "
-                     << mm(sizes.mesh[0].h_contact) << " mm, h_fillet " << mm(sizes.mesh[0].h_fillet) << " mm, Q"
+                     << mm_3(sizes.mesh[0].h_contact) << " mm, h_fillet " << mm_3(sizes.mesh[0].h_fillet) << " mm, Q"
                      << l.degree << std::endl;
       for (int attempt = 0;; ++attempt)
         {
@@ -120,7 +116,7 @@ namespace gearfem::model_choice
               ++l.remeshed;
               if (options.out)
                 *options.out << "model choice: " << (recombination ? "quad recombination failed" : "gmsh mesh refused")
-                             << "; h_fillet " << mm(sizes.mesh[0].h_fillet) << " mm" << std::endl;
+                             << "; h_fillet " << mm_3(sizes.mesh[0].h_fillet) << " mm" << std::endl;
             }
         }
       for (auto &g : sizes.mesh)
@@ -661,7 +657,7 @@ namespace gearfem::model_choice
     std::ostringstream s;
     const Level &d = o.delivered_level();
     s << "Model choice (Solve/Target: " << to_string(o.target) << "): " << (o.met ? "met" : "NOT met")
-      << " with h_contact " << mm(d.h_contact) << " mm, h_fillet " << mm(d.h_fillet) << " mm, Q" << d.degree
+      << " with h_contact " << mm_3(d.h_contact) << " mm, h_fillet " << mm_3(d.h_fillet) << " mm, Q" << d.degree
       << ", " << d.dofs << " DoFs.\n";
     if (!o.stop_reason.empty())
       s << "Refinement stopped: " << o.stop_reason << ".\n";
@@ -680,7 +676,7 @@ namespace gearfem::model_choice
             l.role + " (stopped after " + std::to_string(l.swept_torques) + " of " + std::to_string(o.torques.size()) +
               " torques)" :
             l.role;
-        s << "| " << k + 1 << " | " << role << " | " << mm(l.h_contact) << " | " << mm(l.h_fillet) << " | Q"
+        s << "| " << k + 1 << " | " << role << " | " << mm_3(l.h_contact) << " | " << mm_3(l.h_fillet) << " | Q"
           << l.degree << " | " << l.dofs << " | " << std::fixed << std::setprecision(1) << l.seconds_setup << " | "
           << l.seconds_samples << std::defaultfloat << (l.subdivided ? " (subdivided mesh)" : "")
           << (l.remeshed ? " (remeshed " + std::to_string(l.remeshed) + "x)" : "") << " |";

@@ -1,5 +1,6 @@
 // Koronaios 2021 designs: parametrisation, start points, evaluation with named constraints.
 #include "optimise/design.h"
+#include "geometry/curve.h"
 #include "base/units.h"
 
 #include "base/errors.h"
@@ -12,18 +13,14 @@
 
 namespace gearfem::optimise
 {
+  using geometry::rotate;
+
   using geometry::BSplineCurve;
   using geometry::ConjugateCurve;
   using geometry::CurvePtr;
 
   namespace
   {
-    Vec2 rotate(const Vec2 &v, double a)
-    {
-      const double c = std::cos(a), s = std::sin(a);
-      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-    }
-    std::string mm(double v) { return to_string_g(v * 1e3) + " mm"; }
 
     /// The thesis' sinusoidal rack y = m sin(2x/m) in rack coordinates, half a period from
     /// the crest (u = 0, gear tip) to the trough (u = p/2): v = m cos(2u/m), t = u.

@@ -1,6 +1,7 @@
 // Evaluation of one Koronaios 2021 design: sampled range, statistics, objective, constraints and
 // gearfem's design checks (see design.h).
 #include "base/errors.h"
+#include "geometry/curve.h"
 #include "base/units.h"
 #include "optimise/design.h"
 
@@ -11,14 +12,10 @@
 
 namespace gearfem::optimise
 {
+  using geometry::rotate;
+
   namespace
   {
-    Vec2 rotate(const Vec2 &v, double a)
-    {
-      const double c = std::cos(a), s = std::sin(a);
-      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-    }
-    std::string mm(double v) { return to_string_g(v * 1e3) + " mm"; }
 
     /// Flank parameter where f(at(t)) = target on a grid of the whole flank; NaN if the
     /// grid has no sign change.
@@ -62,7 +59,7 @@ namespace gearfem::optimise
         {
           ta = crossing(k, r1, s.start_radius, "pinion flank parameter at the start radius");
           if (std::isnan(ta))
-            throw InputError("Optimise/Start radius", mm(s.start_radius),
+            throw InputError("Optimise/Start radius", mm_text(s.start_radius),
                              "a radius on the designed pinion flank");
         }
       else
@@ -76,7 +73,7 @@ namespace gearfem::optimise
       double tb = crossing(k, r1, p.tip_radius(1), "pinion tip");
       if (std::isnan(tb))
         throw SolverError("the designed pinion flank does not reach the tip circle r_a1 = " +
-                          mm(p.tip_radius(1)));
+                          mm_text(p.tip_radius(1)));
       return {ta, tb, Sampling::pinion_radius};
     }
 
@@ -125,7 +122,7 @@ namespace gearfem::optimise
         {
           const double t = rk->t_begin() + (rk->t_end() - rk->t_begin()) * i / 200;
           if (!(rk->d1(t).x() > 0))
-            throw SolverError("rack not a function v(u): u' <= 0 at rack height v = " + mm(rk->point(t).y()));
+            throw SolverError("rack not a function v(u): u' <= 0 at rack height v = " + mm_text(rk->point(t).y()));
         }
     const geometry::CurvePtr fl = flank(x);
     const FlankKinematics    k(fl, pair_.r01(), pair_.r02());
@@ -137,7 +134,7 @@ namespace gearfem::optimise
     for (const auto &q : ev.samples)
       {
         if (!std::isfinite(q.kappa_eq))
-          throw SolverError("singular curvature (a cusp on gear 2) at pinion radius " + mm(q.r1));
+          throw SolverError("singular curvature (a cusp on gear 2) at pinion radius " + mm_text(q.r1));
         kap.push_back(q.kappa_eq);
         Kmin = std::min(Kmin, q.K), Kmax = std::max(Kmax, q.K);
       }
@@ -170,7 +167,7 @@ namespace gearfem::optimise
         c_ovl          = std::max(c_ovl, -P.x() / m);
         const double r = P.norm();
         if (i > 0 && dr_prev != 0 && (r - r_prev) * dr_prev < 0)
-          throw SolverError("undercut: the generated pinion flank folds back near r = " + mm(r));
+          throw SolverError("undercut: the generated pinion flank folds back near r = " + mm_text(r));
         if (i > 0)
           dr_prev = r - r_prev;
         r_prev = r;

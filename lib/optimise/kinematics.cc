@@ -10,15 +10,12 @@
 
 namespace gearfem::optimise
 {
+  using geometry::perp;
+  using geometry::rotate;
+
   namespace
   {
-    Vec2 perp(const Vec2 &v) { return Vec2(-v.y(), v.x()); }
     double cross(const Vec2 &a, const Vec2 &b) { return a.x() * b.y() - a.y() * b.x(); }
-    Vec2 rotate(const Vec2 &v, double a)
-    {
-      const double c = std::cos(a), s = std::sin(a);
-      return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
-    }
   } // namespace
 
   FlankKinematics::FlankKinematics(geometry::CurvePtr flank, double r01, double r02)

@@ -32,13 +32,6 @@ namespace gearfem::optimise
     const std::string section = "Optimise/Tip relief/";
     /// Below this amount a design has no relief (build_pair wants C_a > 0) [m].
     constexpr double no_amount = 1e-9;
-    std::string g(double v, int digits = 6)
-    {
-      std::ostringstream s;
-      s.precision(digits);
-      s << v;
-      return s.str();
-    }
   } // namespace
 
   std::vector<double> ReliefProblem::lower() const
@@ -98,7 +91,7 @@ namespace gearfem::optimise
       }
     if (single_torque_optima && torques.size() < 2)
       throw InputError(section + "Single-torque optima", "true",
-                       "false while Solve/Torques has one torque (" + g(torques[0]) + " N m)",
+                       "false while Solve/Torques has one torque (" + to_string_g(torques[0]) + " N m)",
                        "the single-load optima are compared with the robust optimum over 2 or more torques");
     if (check_torques.size() > 50)
       throw InputError(section + "Check torques", std::to_string(check_torques.size()) + " values",
@@ -188,7 +181,7 @@ namespace gearfem::optimise
           }
         catch (const InputError &e)
           {
-            throw InputError(section + (L == p.length_max ? "Maximum length" : "Minimum length"), g(L * 1e3) + " mm",
+            throw InputError(section + (L == p.length_max ? "Maximum length" : "Minimum length"), to_string_g(L * 1e3) + " mm",
                              "a relief the flanks can carry", e.what());
           }
       }
@@ -358,7 +351,7 @@ namespace gearfem::optimise
       std::string s;
       const auto names = p.variable_names();
       for (std::size_t i = 0; i < x.size(); ++i)
-        s += (i ? ", " : "") + names[i] + " " + (i % 2 == 0 ? g(x[i] * 1e6, 4) + " um" : g(x[i] * 1e3, 4) + " mm");
+        s += (i ? ", " : "") + names[i] + " " + (i % 2 == 0 ? to_string_g(x[i] * 1e6, 4) + " um" : to_string_g(x[i] * 1e3, 4) + " mm");
       return s;
     }
   } // namespace
@@ -401,7 +394,7 @@ namespace gearfem::optimise
     };
     const ProgressCallback cb = [&](int k, int, double) {
       progress.step(static_cast<std::size_t>(k),
-                    "best " + g(run.best_row().result.objective, 5) + " um (" + design_text(p, run.best_row().x) + ")");
+                    "best " + to_string_g(run.best_row().result.objective, 5) + " um (" + design_text(p, run.best_row().x) + ")");
     };
     // First steps of a quarter of the box: the FE objective is too costly for small ones.
     OptimiseResult r = optimise(f, u0, std::vector<double>(n, 0.0), std::vector<double>(n, 1.0), settings, cb, 0.25);
@@ -434,7 +427,7 @@ namespace gearfem::optimise
           }
         rec(x);
         progress.step(k + 1, run.best < 0 ? std::string("no successful point yet") :
-                                            "best " + g(run.best_row().result.objective, 5) + " um");
+                                            "best " + to_string_g(run.best_row().result.objective, 5) + " um");
       }
     run.stop_reason = "grid complete";
     run.seconds     = rec.seconds();
@@ -450,10 +443,10 @@ namespace gearfem::optimise
     r.condensed     = model.cycle() != nullptr;
     r.cycle_seconds = r.condensed ? model.cycle()->build_seconds : 0.0;
     if (out)
-      *out << "model: " << model.model().n_dofs() << " DoFs, set-up (mesh, assemble, factorise) " << g(r.setup_seconds, 3)
+      *out << "model: " << model.model().n_dofs() << " DoFs, set-up (mesh, assemble, factorise) " << to_string_g(r.setup_seconds, 3)
            << " s, built once; " << model.positions().size() << " positions x " << s.problem.torques.size()
            << " torque(s) per evaluation"
-           << (r.condensed ? "; designs on a condensed cycle built in " + g(r.cycle_seconds, 3) + " s" : std::string())
+           << (r.condensed ? "; designs on a condensed cycle built in " + to_string_g(r.cycle_seconds, 3) + " s" : std::string())
            << std::endl;
     r.unrelieved.x      = std::vector<double>(s.problem.n_variables(), 0.0);
     for (std::size_t i = 1; i < r.unrelieved.x.size(); i += 2)
@@ -462,21 +455,21 @@ namespace gearfem::optimise
     if (!r.unrelieved.result.ok)
       throw SolverError("the sweep of the unrelieved pair failed: " + r.unrelieved.result.failure);
     if (out)
-      *out << "no relief: objective " << g(r.unrelieved.result.objective, 5) << " um (" << to_string(s.problem.measure)
+      *out << "no relief: objective " << to_string_g(r.unrelieved.result.objective, 5) << " um (" << to_string(s.problem.measure)
            << ", " << to_string(s.problem.aggregate) << " over " << s.problem.torques.size() << " torque(s)), sweep "
-           << g(r.unrelieved.result.seconds, 3) << " s" << std::endl;
+           << to_string_g(r.unrelieved.result.seconds, 3) << " s" << std::endl;
     r.optimiser = optimise_relief(model, s.problem, s.optimiser, out);
     if (out)
       *out << "optimise [" << r.optimiser.name << "]: " << r.optimiser.history.size() << " FE evaluations, "
-           << g(r.optimiser.seconds, 3) << " s, objective " << g(r.optimiser.history.front().result.objective, 5)
-           << " -> " << g(r.optimiser.best_row().result.objective, 5) << " um at "
+           << to_string_g(r.optimiser.seconds, 3) << " s, objective " << to_string_g(r.optimiser.history.front().result.objective, 5)
+           << " -> " << to_string_g(r.optimiser.best_row().result.objective, 5) << " um at "
            << design_text(s.problem, r.optimiser.best_row().x) << " (" << r.optimiser.stop_reason << ")" << std::endl;
     if (s.problem.grid_points > 0)
       {
         r.grid = relief_grid(model, s.problem, s.problem.grid_points, out);
         if (out && r.grid.best >= 0)
-          *out << r.grid.name << ": " << r.grid.history.size() << " FE evaluations, " << g(r.grid.seconds, 3)
-               << " s, best " << g(r.grid.best_row().result.objective, 5) << " um at "
+          *out << r.grid.name << ": " << r.grid.history.size() << " FE evaluations, " << to_string_g(r.grid.seconds, 3)
+               << " s, best " << to_string_g(r.grid.best_row().result.objective, 5) << " um at "
                << design_text(s.problem, r.grid.best_row().x) << std::endl;
       }
     if (s.problem.single_torque_optima)
@@ -486,7 +479,7 @@ namespace gearfem::optimise
         std::vector<std::pair<std::string, std::vector<double>>> designs = {{"no relief", r.unrelieved.x},
                                                                             {"optimum", r.optimiser.best_row().x}};
         for (const auto &single : r.single)
-          designs.emplace_back("optimum at " + g(single.torque) + " N m", single.run.best_row().x);
+          designs.emplace_back("optimum at " + to_string_g(single.torque) + " N m", single.run.best_row().x);
         if (r.grid.best >= 0)
           designs.emplace_back("grid best", r.grid.best_row().x);
         r.check = check_designs(model, s.problem, designs, s.problem.check_torques, out);

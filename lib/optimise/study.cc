@@ -27,12 +27,6 @@ namespace gearfem::optimise
       return k == DesignKind::case1_rack ? ThesisRow{0.0708, 0.1644, 0.0490, 0.0} :
                                            ThesisRow{0.1130, 0.1148, 0.0014, 1.04};
     }
-    std::string g(double v, int digits = 6)
-    {
-      std::ostringstream s;
-      s << std::setprecision(digits) << v;
-      return s.str();
-    }
   } // namespace
 
   void check_study(const Study &s)
@@ -96,18 +90,18 @@ namespace gearfem::optimise
         const auto &o = s.runs[i];
         Progress    progress(out, static_cast<std::size_t>(o.max_evaluations),
                              std::string("optimise [") + to_string(o.method) + "] evaluations");
-        auto cb = [&](int k, int, double best) { progress.step(k, "best feasible objective " + g(best) + " 1/mm"); };
+        auto cb = [&](int k, int, double best) { progress.step(k, "best feasible objective " + to_string_g(best) + " 1/mm"); };
         StudyRun run;
         run.result  = optimise(d, x0, s.eval, o, cb);
         run.optimum = d.evaluate(run.result.x_best, rep);
         if (out)
           *out << "optimise [" << to_string(o.method) << "]: " << run.result.evaluations << " evaluations, "
-               << g(run.result.seconds, 3) << " s, objective " << g(run.result.start.objective) << " -> "
-               << g(run.result.best.objective) << " 1/mm (" << run.result.stop_reason << ")\n";
+               << to_string_g(run.result.seconds, 3) << " s, objective " << to_string_g(run.result.start.objective) << " -> "
+               << to_string_g(run.result.best.objective) << " 1/mm (" << run.result.stop_reason << ")\n";
         if (out) // the constraints that bound the optimum (c within 1e-3 of 0)
           for (int c = 0; c < n_constraints; ++c)
             if (run.optimum.computable && run.optimum.constraints[c] > -1e-3)
-              *out << "  near-active constraint: " << constraint_name(c) << " (c = " << g(run.optimum.constraints[c], 3)
+              *out << "  near-active constraint: " << constraint_name(c) << " (c = " << to_string_g(run.optimum.constraints[c], 3)
                    << ")\n";
         r.runs.push_back(std::move(run));
         if (r.runs.back().optimum.objective < r.runs[r.best_run].optimum.objective)
@@ -122,15 +116,15 @@ namespace gearfem::optimise
            "std(1/R) [1/mm] | contact ratio | stop |\n|---|---|---|---|---|---|---|---|---|\n";
     auto row = [&](const std::string &name, const std::string &ev, const std::string &t, const Evaluation &e,
                    const std::string &stop) {
-      out << "| " << name << " | " << ev << " | " << t << " | " << g(objective(s.kind, e.stats, e.integral, e.contact_ratio, s.eval.weights), 5)
-          << " | " << g(e.stats.mean_abs * 1e-3, 4) << " | " << g(e.stats.max_abs * 1e-3, 4) << " | "
-          << g(e.stats.std * 1e-3, 4) << " | " << g(e.contact_ratio, 4) << " | " << stop << " |\n";
+      out << "| " << name << " | " << ev << " | " << t << " | " << to_string_g(objective(s.kind, e.stats, e.integral, e.contact_ratio, s.eval.weights), 5)
+          << " | " << to_string_g(e.stats.mean_abs * 1e-3, 4) << " | " << to_string_g(e.stats.max_abs * 1e-3, 4) << " | "
+          << to_string_g(e.stats.std * 1e-3, 4) << " | " << to_string_g(e.contact_ratio, 4) << " | " << stop << " |\n";
     };
     row("involute (SAP to tip)", "", "", r.involute, "reference");
     row("sinusoid", "", "", r.sinusoid, "reference");
     row("start", "", "", r.start, "");
     for (const auto &run : r.runs)
-      row(to_string(run.result.method), std::to_string(run.result.evaluations), g(run.result.seconds, 3),
+      row(to_string(run.result.method), std::to_string(run.result.evaluations), to_string_g(run.result.seconds, 3),
           run.optimum, run.result.stop_reason);
     // The thesis' objective: case 1 from its row; case 2 estimated with int (1/R)^2 dx =
     // (mean^2 + std^2) times the position-2 extent of our best optimum (the thesis gives
@@ -141,9 +135,9 @@ namespace gearfem::optimise
                           t.mean + t.max + t.std :
                           w[0] * (t.mean * t.mean + t.std * t.std) * r.runs[r.best_run].optimum.x_extent + w[1] * t.std +
                             w[2] / t.eps;
-    out << "| thesis optimum (" << to_string(s.kind) << ") | | | " << (s.kind == DesignKind::case1_rack ? "" : "~") << g(f, 5)
+    out << "| thesis optimum (" << to_string(s.kind) << ") | | | " << (s.kind == DesignKind::case1_rack ? "" : "~") << to_string_g(f, 5)
         << " | " << t.mean << " | " << t.max << " | " << t.std << " | "
-        << (t.eps > 0 ? g(t.eps) : std::string("not stated")) << " | steepest descent |\n";
+        << (t.eps > 0 ? to_string_g(t.eps) : std::string("not stated")) << " | steepest descent |\n";
   }
 
   void write_study(const Study &s, const StudyResult &r, const std::filesystem::path &dir)
@@ -154,8 +148,8 @@ namespace gearfem::optimise
       f.stream() << "method,evaluation,objective [1/mm],feasible,best feasible [1/mm],time [s]\n";
       for (const auto &run : r.runs)
         for (const auto &h : run.result.history)
-          f.stream() << to_string(run.result.method) << ',' << h.evaluation << ',' << g(h.objective, 10) << ','
-                     << (h.feasible ? 1 : 0) << ',' << g(h.best, 10) << ',' << g(h.seconds, 6) << '\n';
+          f.stream() << to_string(run.result.method) << ',' << h.evaluation << ',' << to_string_g(h.objective, 10) << ','
+                     << (h.feasible ? 1 : 0) << ',' << to_string_g(h.best, 10) << ',' << to_string_g(h.seconds, 6) << '\n';
       f.commit();
     }
     {
@@ -163,7 +157,7 @@ namespace gearfem::optimise
       const auto &w = s.eval.weights;
       f.stream() << "# Koronaios 2021 " << to_string(s.kind) << " optimisation";
       if (s.kind == DesignKind::case2_flank && (w[0] != 2.5 || w[1] != 1.0 || w[2] != 0.1))
-        f.stream() << " (objective weights " << g(w[0]) << ", " << g(w[1]) << ", " << g(w[2]) << ")";
+        f.stream() << " (objective weights " << to_string_g(w[0]) << ", " << to_string_g(w[1]) << ", " << to_string_g(w[2]) << ")";
       if (s.kind == DesignKind::case2_flank && s.fixed_end == FixedEnd::root)
         f.stream() << " (P0 fixed)";
       f.stream() << "\n\n";
@@ -181,8 +175,8 @@ namespace gearfem::optimise
           return;
         auto pos = [&](const ContactSample &q) { return (by_radius ? q.r1 : q.rack_u) * 1e3; };
         for (const auto &q : S)
-          f.stream() << name << ',' << g(pos(q), 8) << ',' << g((pos(q) - pos(S.front())) / (pos(S.back()) - pos(S.front())), 6)
-                     << ',' << g(q.r1 * 1e3, 8) << ',' << g(q.kappa_eq * 1e-3, 8) << '\n';
+          f.stream() << name << ',' << to_string_g(pos(q), 8) << ',' << to_string_g((pos(q) - pos(S.front())) / (pos(S.back()) - pos(S.front())), 6)
+                     << ',' << to_string_g(q.r1 * 1e3, 8) << ',' << to_string_g(q.kappa_eq * 1e-3, 8) << '\n';
       };
       const bool radius = s.kind == DesignKind::case2_flank;
       put("involute", r.involute, true);
@@ -198,7 +192,7 @@ namespace gearfem::optimise
         for (int i = 0; i <= 200; ++i)
           {
             const Vec2 p = c->point(c->t_begin() + (c->t_end() - c->t_begin()) * i / 200) * 1e3;
-            f.stream() << name << ',' << g(p.x(), 8) << ',' << g(p.y(), 8) << '\n';
+            f.stream() << name << ',' << to_string_g(p.x(), 8) << ',' << to_string_g(p.y(), 8) << '\n';
           }
       };
       put("involute", Design(DesignKind::involute, s.pair).flank({}));
@@ -214,7 +208,7 @@ namespace gearfem::optimise
       std::ostream     &o  = f.stream();
       o << (c2 ? "# gearfem solve\n" : "# gearfem profile (case 1: see the note below)\n");
       o << "# Koronaios 2021 " << to_string(s.kind) << " optimum by " << to_string(best.method) << " (gearfem optimise): objective "
-        << g(r.runs[r.best_run].optimum.objective) << " 1/mm.\n";
+        << to_string_g(r.runs[r.best_run].optimum.objective) << " 1/mm.\n";
       const auto cp = d.control_points(best.x_best);
       if (!c2)
         o << "# Case 1: a closed rack (level crest at u = 0, level trough at u = p/2) whose crest and\n"
@@ -222,18 +216,18 @@ namespace gearfem::optimise
              "# not pointed. gearfem builds the teeth but refuses the pair (exit 2) when its path of\n"
              "# contact reverses (several points of one flank in contact at once, as for the sinusoid)\n"
              "# or its contact ratio is below 1: see docs/optimise.md.\n";
-      o << "subsection Rack\n  set Module                  = " << g(s.pair.module * 1e3, 10)
-        << "\n  set Pressure angle          = " << g(s.pair.pressure_angle / units::deg, 10)
-        << "\n  set Addendum coefficient    = " << g(c2 ? s.pair.addendum : cp.front().y(), 10)
-        << "\n  set Dedendum coefficient    = " << g(c2 ? s.pair.dedendum : -cp.back().y(), 10)
-        << "\n  set Root radius coefficient = " << g(s.pair.root_radius, 10)
+      o << "subsection Rack\n  set Module                  = " << to_string_g(s.pair.module * 1e3, 10)
+        << "\n  set Pressure angle          = " << to_string_g(s.pair.pressure_angle / units::deg, 10)
+        << "\n  set Addendum coefficient    = " << to_string_g(c2 ? s.pair.addendum : cp.front().y(), 10)
+        << "\n  set Dedendum coefficient    = " << to_string_g(c2 ? s.pair.dedendum : -cp.back().y(), 10)
+        << "\n  set Root radius coefficient = " << to_string_g(s.pair.root_radius, 10)
         << "\n  set Profile type            = " << (c2 ? "bspline flank" : "bspline rack") << "\n  set Control points          = ";
       for (std::size_t i = 0; i < cp.size(); ++i)
-        o << (i ? "; " : "") << g(cp[i].x(), 12) << ", " << g(cp[i].y(), 12);
+        o << (i ? "; " : "") << to_string_g(cp[i].x(), 12) << ", " << to_string_g(cp[i].y(), 12);
       o << "\n  set Spline degree           = 4\nend\n";
       for (int i : {1, 2})
         o << "subsection Gear " << i << "\n  set Number of teeth = " << (i == 1 ? s.pair.z1 : s.pair.z2)
-          << "\n  set Face width      = " << g(s.face_width * 1e3, 10)
+          << "\n  set Face width      = " << to_string_g(s.face_width * 1e3, 10)
           << (c2 ? "" : "\n  set Tip shortening coefficient = 0.05") << "\nend\n";
       if (c2) // the FE check of Koronaios 2021 (ch. 7), as inputs/seed003_opt_fe_involute.prm
         o << "subsection Mesh\n  set Model        = sector\n  set Sector teeth = 3\n  set h_fillet     = 0.15\n"

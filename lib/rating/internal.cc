@@ -16,7 +16,6 @@ namespace gearfem::rating
     using units::pi;
     constexpr double deg = pi / 180.0;
     double inv(double a) { return std::tan(a) - a; }
-    std::string mm(double v) { return to_string_g(v * 1e3) + " mm"; }
   } // namespace
 
   // ------------------------------------------------------------------ ISO 6336-3 pieces
@@ -77,7 +76,7 @@ namespace gearfem::rating
       if (!(s.s_Fn > 0.0 && s.y > 0.0))
         throw InputError("internal gear basic rack (h_fP*, rho_fP*, x2)",
                          to_string_g(h_fP) + ", " + to_string_g(rho_fP) + ", " + to_string_g(x2),
-                         "a ring tooth with a root chord", "ISO 6336-3 closed form gives s_Fn = " + mm(s.s_Fn));
+                         "a ring tooth with a root chord", "ISO 6336-3 closed form gives s_Fn = " + mm_text(s.s_Fn));
       return s;
     }
 
@@ -85,7 +84,7 @@ namespace gearfem::rating
                                       double m, double an)
     {
       if (!(r_e > fl.rb))
-        throw InputError("ISO 6336-3 load radius (internal gear)", mm(r_e), "> base radius " + mm(fl.rb));
+        throw InputError("ISO 6336-3 load radius (internal gear)", mm_text(r_e), "> base radius " + mm_text(fl.rb));
       const double a_en = std::acos(fl.rb / r_e);
       const double gamma_e = fl.psi_b + inv(a_en);
       RootFactors f;
@@ -95,7 +94,7 @@ namespace gearfem::rating
       f.h_Fe = y - fl.rb / std::cos(f.alpha_Fen);
       if (!(f.h_Fe > 0.0))
         throw SolverError("ISO 6336-3 (internal gear): the load line meets the tooth axis beyond the critical "
-                          "section (h_Fe = " + mm(f.h_Fe) + ")");
+                          "section (h_Fe = " + mm_text(f.h_Fe) + ")");
       const double sm = s_Fn / m, hm = f.h_Fe / m;
       f.Y_F = 6.0 * hm * std::cos(f.alpha_Fen) / (sm * sm * std::cos(an));
       f.L = s_Fn / f.h_Fe;
@@ -109,24 +108,6 @@ namespace gearfem::rating
 
   namespace
   {
-    struct Builder
-    {
-      RatingReport &r;
-      std::string standard;
-      void add(const std::string &q, const std::string &sym, const std::string &clause, const std::string &unit,
-               std::vector<double> v)
-      {
-        for (double x : v)
-          if (!std::isfinite(x))
-            throw SolverError("internal rating: " + standard + " " + sym + " is not finite");
-        r.rows.push_back({standard, q, sym, clause, unit, std::move(v)});
-      }
-      void constant(const std::string &q, const std::string &sym, const std::string &clause, const std::string &unit,
-                    double x)
-      {
-        add(q, sym, clause, unit, std::vector<double>(r.torques.size(), x));
-      }
-    };
 
     const geometry::ProfileSegment &drive_segment(const geometry::InternalToothProfile &ring,
                                                   geometry::SegmentType type)
@@ -211,14 +192,14 @@ namespace gearfem::rating
         throw InputError("Internal mesh/Ring teeth", std::to_string(mi.z2), std::to_string(c.z2) + " (the ring's)");
       for (double v : {mi.module, c.p2.parameters().module})
         if (std::abs(v - c.m) > 1e-12 * c.m)
-          throw InputError(R + "Module", mm(v), mm(c.m) + " (the pinion's)");
+          throw InputError(R + "Module", mm_text(v), mm_text(c.m) + " (the pinion's)");
       const double sR1 = c.in.pinion_rim_thickness, sR2 = c.in.ring_rim_thickness;
       if (sR1 != 0.0 && !(sR1 > 0.5 * c.ht1))
-        throw InputError("Rating/Pinion rim thickness", mm(sR1), "0 (solid) or > 0.5 h_t = " + mm(0.5 * c.ht1),
+        throw InputError("Rating/Pinion rim thickness", mm_text(sR1), "0 (solid) or > 0.5 h_t = " + mm_text(0.5 * c.ht1),
                          "ISO 6336-3 Y_B (s_R/h_t > 0.5) and AGMA 2101-D04 K_B (m_B >= 0.5)");
       const double lo2 = std::max(1.75 * c.m, 0.5 * c.ht2);
       if (sR2 != 0.0 && !(sR2 > lo2))
-        throw InputError("Rating/Ring rim thickness", mm(sR2), "0 (not given) or > " + mm(lo2),
+        throw InputError("Rating/Ring rim thickness", mm_text(sR2), "0 (not given) or > " + mm_text(lo2),
                          "ISO 6336-3 Y_B of internal gears (s_R/m_n > 1.75) and AGMA 2101-D04 K_B (m_B >= 0.5)");
     }
 
@@ -226,7 +207,7 @@ namespace gearfem::rating
     void add_iso_contact(const Context &c, RatingReport &rep, double KFb)
     {
       const RatingInput &in = c.r;
-      Builder B{rep, "ISO 6336"};
+      RowBuilder B{rep, "ISO 6336", "internal rating"};
       const geometry::InternalMesh &mesh = c.mesh;
       iso6336::ContactInput ci;
       ci.z1 = c.z1, ci.z2 = -c.z2;
@@ -272,7 +253,7 @@ namespace gearfem::rating
     }
 
     /// ISO 6336-3 method B rows of one member: section, factors, Y_B, stresses.
-    void add_iso_root_member(const Context &c, Builder &B, const std::string &s, const std::string &method,
+    void add_iso_root_member(const Context &c, RowBuilder &B, const std::string &s, const std::string &method,
                              const iso6336::RootFactors &rf, double Y_B, const std::string &yb_clause, double KFb)
     {
       const RatingInput &in = c.r;
@@ -295,7 +276,7 @@ namespace gearfem::rating
     /// the generated ring fillet).
     void add_iso_root(const Context &c, RatingReport &rep, double KFb)
     {
-      Builder B{rep, "ISO 6336"};
+      RowBuilder B{rep, "ISO 6336", "internal rating"};
       const geometry::InternalMesh &mesh = c.mesh;
       B.constant("helix angle factor", "Y_beta", "6336-3 eq. 48", "-", 1.0);
       // Pinion: the external machinery at its outer point of single contact D.
@@ -344,7 +325,7 @@ namespace gearfem::rating
     void add_agma(const Context &c, RatingReport &rep)
     {
       const RatingInput &in = c.r;
-      Builder B{rep, "AGMA"};
+      RowBuilder B{rep, "AGMA", "internal rating"};
       const geometry::InternalMesh &mesh = c.mesh;
       const agma::LineOfAction l = agma::line_of_action_internal(c.z1, c.z2, c.m, c.alpha, mesh.in.tip_radius1,
                                                                  mesh.in.tip_radius2, mesh.a);
@@ -427,7 +408,7 @@ namespace gearfem::rating
               0, 0, g1.profile_shift, g2.profile_shift, 0, 0, ring.radii().root, ring.radii().reference};
     require_greater(g1.name + "/Face width", g1.face_width, 0.0, "m");
     if (in.ring_face_width < 0.0)
-      throw InputError("Rating/Ring face width", mm(in.ring_face_width), ">= 0 (0: the pinion's)");
+      throw InputError("Rating/Ring face width", mm_text(in.ring_face_width), ">= 0 (0: the pinion's)");
     c.b = in.ring_face_width > 0.0 ? std::min(g1.face_width, in.ring_face_width) : g1.face_width;
     c.d1 = c.m * c.z1;
     c.ht1 = pinion.radii().tip - pinion.radii().root;

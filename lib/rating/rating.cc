@@ -21,30 +21,22 @@ namespace gearfem::rating
   {
     using units::pi;
 
-    struct Builder
-    {
-      RatingReport &r;
-      std::string standard;
-      void add(const std::string &q, const std::string &sym, const std::string &clause,
-               const std::string &unit, std::vector<double> v)
-      {
-        for (double x : v)
-          if (!std::isfinite(x))
-            throw SolverError("rating: " + standard + " " + sym + " is not finite");
-        r.rows.push_back({standard, q, sym, clause, unit, std::move(v)});
-      }
-      void constant(const std::string &q, const std::string &sym, const std::string &clause,
-                    const std::string &unit, double x)
-      {
-        add(q, sym, clause, unit, std::vector<double>(r.torques.size(), x));
-      }
-    };
 
     void check_factor(const std::string &name, double v)
     {
       require_greater("Rating/" + name, v, 0.0);
     }
   } // namespace
+
+  void RatingReport::add(const std::string &what, const std::string &standard, const std::string &quantity,
+                         const std::string &symbol, const std::string &clause, const std::string &unit,
+                         std::vector<double> v)
+  {
+    for (double x : v)
+      if (!std::isfinite(x))
+        throw SolverError(what + ": " + standard + " " + symbol + " is not finite");
+    rows.push_back({standard, quantity, symbol, clause, unit, std::move(v)});
+  }
 
   const RatingRow &RatingReport::row(const std::string &standard, const std::string &symbol) const
   {
@@ -112,7 +104,7 @@ namespace gearfem::rating
       const int z1 = c.z1, z2 = c.z2;
       const double m = c.m, alpha = c.alpha, b = c.b, a = c.a, dw1 = c.dw1, ra1 = c.ra1, ra2 = c.ra2;
       auto per_torque = [&c](auto f) { return c.per_torque(f); };
-      Builder B{rep, "AGMA"};
+      RowBuilder B{rep, "AGMA"};
       const agma::LineOfAction l = agma::line_of_action(z1, z2, m, alpha, ra1, ra2, a);
       const double ZI = agma::geometry_factor_I(l);
       const double ZE = agma::Z_E(in.E1, in.nu1, in.E2, in.nu2);
@@ -183,7 +175,7 @@ namespace gearfem::rating
       const int z1 = c.z1, z2 = c.z2;
       const double m = c.m, alpha = c.alpha, b = c.b, d1 = c.d1, ra1 = c.ra1, ra2 = c.ra2, eps = c.eps;
       auto per_torque = [&c](auto f) { return c.per_torque(f); };
-      Builder B{rep, "ISO 6336"};
+      RowBuilder B{rep, "ISO 6336"};
       const double db1 = 2 * pair.base_radius(1), db2 = 2 * pair.base_radius(2);
       iso6336::StiffnessInput si;
       si.z1 = z1;

@@ -49,6 +49,28 @@ namespace gearfem::rating
     /// Markdown report (one table per standard) and CSV, written atomically.
     void write_markdown(const std::filesystem::path &file, const std::string &title) const;
     void write_csv(const std::filesystem::path &file) const;
+    /// Append a row of `standard` (one value per torque); SolverError naming `what`, the
+    /// standard and the symbol for a value that is not finite.
+    void add(const std::string &what, const std::string &standard, const std::string &quantity,
+             const std::string &symbol, const std::string &clause, const std::string &unit, std::vector<double> v);
+  };
+
+  /// The rows of one standard of a report, as its rating code adds them.
+  struct RowBuilder
+  {
+    RatingReport &r;
+    std::string standard;
+    std::string what = "rating"; ///< names the rating in the error of a value that is not finite
+    void add(const std::string &q, const std::string &sym, const std::string &clause, const std::string &unit,
+             std::vector<double> v)
+    {
+      r.add(what, standard, q, sym, clause, unit, std::move(v));
+    }
+    void constant(const std::string &q, const std::string &sym, const std::string &clause, const std::string &unit,
+                  double x)
+    {
+      add(q, sym, clause, unit, std::vector<double>(r.torques.size(), x));
+    }
   };
 
   /// Rate the pair for each torque. Throws InputError for bad factors (K <= 0, ...).

@@ -20,13 +20,8 @@ namespace gearfem::solve
 
   namespace
   {
-    using units::pi;
     using Clock     = std::chrono::steady_clock;
 
-    double since(Clock::time_point t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
 
     EstimatedQuantities quantities(const PositionResult &r)
     {

@@ -24,7 +24,6 @@ namespace gearfem::solve
 
   namespace
   {
-    using units::pi;
 
     int point_code(const std::string &n)
     {
@@ -244,7 +243,7 @@ namespace gearfem::solve
   void append_position(io::SolveResults &t, const contact::ContactState &state, const PositionResult &r,
                        const std::string &name, int index, double z_ratio, double face_width)
   {
-    const double deg = 180 / pi;
+    const double deg = 180 / units::pi;
     const auto &s    = state.solution;
     auto width       = [&](double k) { return k / (face_width * 1e3) * 1e-6; }; // N/m -> N/(mm um)
     double share     = 0;

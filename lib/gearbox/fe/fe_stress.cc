@@ -24,7 +24,7 @@ namespace gearfem::gearbox::fe
   {
     using units::pi;
 
-    std::string mm(double x)
+    std::string mm_12(double x)
     {
       std::ostringstream s;
       s << std::setprecision(12) << x * 1e3;
@@ -80,7 +80,7 @@ namespace gearfem::gearbox::fe
     const double h_fillet = o.h_fillet > 0 ? o.h_fillet : g.module / 14.0;
     const double h_body = o.h_body > 0 ? o.h_body : g.module;
     std::ostringstream c;
-    c << "subsection Rack\n  set Module = " << mm(g.module) << "\n  set Pressure angle = " << num(g.alpha / units::deg)
+    c << "subsection Rack\n  set Module = " << mm_12(g.module) << "\n  set Pressure angle = " << num(g.alpha / units::deg)
       << "\n  set Addendum coefficient = " << num(s.addendum) << "\n  set Dedendum coefficient = " << num(tool.h_ao)
       << "\n  set Root radius coefficient = " << num(tool.rho_ao) << "\nend\n";
     const int z[2] = {g.z1, g.z2};
@@ -88,19 +88,19 @@ namespace gearfem::gearbox::fe
     for (int i = 0; i < 2; ++i)
       c << "subsection Gear " << i + 1 << "\n  set Number of teeth = " << z[i]
         << "\n  set Profile shift coefficient = " << num(x[i]) << "\n  set Tip shortening coefficient = "
-        << num(s.tip_shortening) << "\n  set Face width = " << mm(g.b) << "\nend\n";
+        << num(s.tip_shortening) << "\n  set Face width = " << mm_12(g.b) << "\nend\n";
     if (g.internal)
       c << internal_case(g, s, tool);
     else
-      c << "subsection Pair\n  set Centre distance = " << mm(g.a) << "\nend\n";
+      c << "subsection Pair\n  set Centre distance = " << mm_12(g.a) << "\nend\n";
     c << "subsection Material\n  set Plane model = plane strain\n";
     for (int i = 1; i <= 2; ++i)
       c << "  subsection Gear " << i << "\n    set Young's modulus = " << num(m.E / 1e9)
         << "\n    set Poisson ratio = " << num(m.nu) << "\n  end\n";
     c << "end\n";
     c << "subsection Mesh\n  set Model = sector\n  set Sector teeth = " << o.sector_teeth
-      << "\n  set h_contact = " << mm(h_contact) << "\n  set h_fillet = " << mm(h_fillet)
-      << "\n  set h_body = " << mm(h_body) << "\nend\n";
+      << "\n  set h_contact = " << mm_12(h_contact) << "\n  set h_fillet = " << mm_12(h_fillet)
+      << "\n  set h_body = " << mm_12(h_body) << "\nend\n";
     c << "subsection Solve\n  set Positions = cycle\n  set Number of positions = " << o.positions
       << "\n  set Pitches = 1\n  set Start = A\n  set Torques = ";
     for (std::size_t i = 0; i < pinion_torques.size(); ++i)
@@ -125,7 +125,7 @@ namespace gearfem::gearbox::fe
       c << "\n  set Backup ratio = 1.2";
     c << "\nend\n";
     if (rim > 0)
-      c << "subsection Mesh\n  subsection Gear 2\n    set Rim thickness = " << mm(rim) << "\n  end\nend\n";
+      c << "subsection Mesh\n  subsection Gear 2\n    set Rim thickness = " << mm_12(rim) << "\n  end\nend\n";
     return c.str();
   }
 
