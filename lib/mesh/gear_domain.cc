@@ -149,6 +149,18 @@ namespace gearfem::mesh
 
   namespace
   {
+  double cell_estimate(const GearMeshParameters &p, const geometry::ToothProfile &tooth, double ri, double h_coarse,
+                       int n_teeth, int n_fine)
+  {
+    const double m          = tooth.parameters().rack.module;
+    const double tooth_area = 2.25 * m * units::pi * m / 2;
+    const double h_fine     = std::min(contact_size(p, m), p.h_fillet);
+    const double fraction   = double(n_teeth) / tooth.teeth();
+    const double ring       = fraction * units::pi * (std::pow(tooth.radii().root, 2) - std::pow(ri, 2));
+    return ring / (p.h_body * p.h_body) + n_fine * tooth_area / (h_fine * h_fine) +
+           (n_teeth - n_fine) * tooth_area / (h_coarse * h_coarse);
+  }
+
   /// Named stops for meshes that would not resolve the tooth or would not fit one machine.
   void check_resolution(const GearMeshParameters &p, const geometry::ToothProfile &tooth,
                         double ri, double h_coarse, int n_teeth, int n_fine)
@@ -167,18 +179,11 @@ namespace gearfem::mesh
                        "fewer than ~2 elements along the fillet do not resolve the tooth");
     if (p.h_tooth > m)
       throw InputError("Mesh/h_tooth", mm(p.h_tooth), "<= module = " + mm(m) + " (0: automatic)");
-    // Estimated number of quadrilaterals: the body ring (tip to bore) at h_body, plus each
-    // tooth (area ~ 2.25 m x pi m / 2) at its own size. The limit keeps a mesh within the
-    // memory and time of one machine (a full gear of 10000 teeth at the default sizes would
-    // need ~1e8 cells): beyond it, stop with the estimate instead of meshing for hours.
-    const double limit      = 2e6;
-    const double pi_        = units::pi;
-    const double tooth_area = 2.25 * m * pi_ * m / 2;
-    const double h_fine     = std::min(contact_size(p, m), p.h_fillet);
-    const double fraction   = double(n_teeth) / tooth.teeth();
-    const double ring       = fraction * pi_ * (std::pow(tooth.radii().root, 2) - std::pow(ri, 2));
-    const double estimate   = ring / (p.h_body * p.h_body) + n_fine * tooth_area / (h_fine * h_fine) +
-                            (n_teeth - n_fine) * tooth_area / (h_coarse * h_coarse);
+    // The limit keeps a mesh within the memory and time of one machine (a full gear of 10000
+    // teeth at the default sizes would need ~1e8 cells): beyond it, stop with the estimate
+    // instead of meshing for hours.
+    const double limit    = max_cells;
+    const double estimate = cell_estimate(p, tooth, ri, h_coarse, n_teeth, n_fine);
     if (!(estimate <= limit))
       throw InputError(p.model == GearMeshParameters::Model::full_gear ? "Mesh/Model" : "Mesh/h_body",
                        p.model == GearMeshParameters::Model::full_gear ?
@@ -503,6 +508,13 @@ namespace gearfem::mesh
       }
     close_domain(d, std::move(outer), p, ri);
     return d;
+  }
+
+  double estimated_cells(const GearMeshParameters &p, const geometry::ToothProfile &tooth)
+  {
+    const int z = tooth.teeth();
+    return cell_estimate(p, tooth, inner_radius(p, tooth), tooth_size(p, tooth.parameters().rack.module),
+                         int(model_teeth(p, z).size()), int(fine_teeth(p, z).size()));
   }
 
   MeshData mesh_gear(const geometry::ToothProfile &tooth, const GearMeshParameters &p,

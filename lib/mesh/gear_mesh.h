@@ -89,6 +89,12 @@ namespace gearfem::mesh
   /// Radius of the inner boundary (bore or fixed rim) [m]. Throws InputError when it
   /// leaves no material (bore radius >= root radius, rim thickness >= root radius).
   double inner_radius(const GearMeshParameters &p, const geometry::ToothProfile &tooth);
+  /// Cells of one machine's gear mesh at most: beyond it meshing stops with a named error.
+  inline constexpr double max_cells = 2e6;
+  /// Estimated quadrilaterals of the mesh of `tooth` with `p`: the body ring (tip to bore) at
+  /// h_body plus each modelled tooth (area ~ 2.25 m x pi m / 2) at its own size. The size check
+  /// of meshing compares it with max_cells; the model choice stops refining before it.
+  double estimated_cells(const GearMeshParameters &p, const geometry::ToothProfile &tooth);
   /// Largest difference |delta_k - delta_(k-1)| [rad] of the tooth placement offsets of
   /// neighbouring teeth that gear_domain accepts: the angle of half a root land (each root land
   /// gives or takes half the difference and keeps at least half its length); 0 when the outline

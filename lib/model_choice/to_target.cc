@@ -1,5 +1,7 @@
 #include "model_choice/to_target.h"
 
+#include "mesh/gear_mesh.h"
+
 #include "base/errors.h"
 #include "base/progress.h"
 #include "base/units.h"
@@ -317,12 +319,34 @@ namespace gearfem::model_choice
               o.stop_reason = s.str();
               break;
             }
+          // The mesh limit of one machine: stop before a level that meshing would refuse, with
+          // an entry (Mesh/h_body, Mesh/Model) the input may never have set.
+          const Sizes finer = scaled(cand, 1 / fc, 1 / ff);
+          std::string beyond;
+          if (!in.pair->is_internal())
+            for (int i = 0; i < 2 && beyond.empty(); ++i)
+              {
+                const double cells = mesh::estimated_cells(finer.mesh[i], in.pair->gear(i + 1));
+                if (!(cells <= mesh::max_cells))
+                  {
+                    std::ostringstream s;
+                    s << std::setprecision(3) << "the next level (refined " << fc << " x on the contact, " << ff
+                      << " x on the fillet) would mesh gear " << i + 1 << " with about " << cells
+                      << " cells, beyond the " << mesh::max_cells << " of one machine";
+                    beyond = s.str();
+                  }
+              }
+          if (!beyond.empty())
+            {
+              o.stop_reason = beyond;
+              break;
+            }
           if (options.out)
             *options.out << "model choice: estimate above the target; refining h_contact by " << fc << ", h_fillet by "
                          << ff << std::endl;
           model.reset();
           carried = l.estimate;
-          cand    = scaled(cand, 1 / fc, 1 / ff);
+          cand    = finer;
         }
       o.delivered          = o.levels.size() - 1;
       o.levels.back().role = "delivered";

@@ -120,6 +120,16 @@ TEST(GearMesh, FullGearFineTeeth)
   const int coarse = ids[mesh::boundary::tooth_id(25, mesh::boundary::flank_drive)];
   EXPECT_GT(fine, 3 * coarse);
   EXPECT_EQ(mesh::fine_teeth(p, 50), (std::vector<int>{0, 1, 2, 48, 49}));
+  // The cell estimate that bounds meshing (and stops the model choice's refinement) against
+  // the mesh it estimates: within a factor 2 of the cells gmsh made.
+  const double estimate = mesh::estimated_cells(p, tooth);
+  std::cout << "estimated " << estimate << " cells" << std::endl;
+  EXPECT_GT(estimate, 0.5 * double(m.cells.size()));
+  EXPECT_LT(estimate, 2.0 * double(m.cells.size()));
+  // Beyond mesh::max_cells the estimate and meshing agree: a named refusal before gmsh runs.
+  p.h_contact = p.h_fillet = 5e-6;
+  EXPECT_GT(mesh::estimated_cells(p, tooth), mesh::max_cells);
+  EXPECT_THROW(mesh::mesh_gear(tooth, p), InputError);
 }
 
 // Bad input gets named errors.
