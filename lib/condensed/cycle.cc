@@ -197,7 +197,12 @@ namespace gearfem::condensed
                                                                               std::sqrt(lo * hi);
             const auto w       = warm.find(T);
             const auto state   = model.solve(phi1, T, w == warm.end() ? nullptr : &w->second);
-            auto p             = solver.condense(model.scene(phi1, T / rb1), state.solution);
+            const double sd    = solver.options().search_distance;
+            const double band  = options.band_factor > 0 ?
+                                   std::min(sd, std::max(options.band_factor * std::abs(state.solution.q) * rb1 * torque_hi / T,
+                                                         sd / 20)) :
+                                   0.0;
+            auto p             = solver.condense(model.scene(phi1, T / rb1), state.solution, band);
             p.load_lo = lo, p.load_hi = hi;
             c.cycle.back().push_back(std::move(p));
             warm[T] = state.solution;

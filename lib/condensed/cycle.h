@@ -124,6 +124,13 @@ namespace gearfem::condensed
     /// Largest torque ratio one scene spans (`Condense/Scene torque ratio`); 0: no split.
     double scene_ratio = 4.0;
     std::ostream *out = nullptr; ///< progress with i/N and ETA; null: silent
+    /// Candidate band (0: every candidate within Contact/Search distance). For a cycle re-solved
+    /// at its own torques only (CycleUse::given_torques with the modifications of its input,
+    /// e.g. Solve/Target's torque sweeps): each scene keeps the candidates whose gap at its
+    /// build is within band_factor times the approach (STE) at the top of its load range,
+    /// extrapolated linearly from its build, and at least a twentieth of the search distance.
+    /// The re-solve's edge check (half the band) refuses any load beyond it.
+    double band_factor = 0;
   };
 
   /// The condensed cycle of `in` on `model` (built from `in`): the FE run over the positions of

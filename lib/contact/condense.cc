@@ -12,7 +12,7 @@
 
 namespace gearfem::contact
 {
-  CondensedPosition TwoBodyContact::condense(const Scene &scene, const ContactSolution &solution)
+  CondensedPosition TwoBodyContact::condense(const Scene &scene, const ContactSolution &solution, double band)
   {
     if (!solution.converged)
       throw SolverError("condense: the solution to condense did not converge");
@@ -20,6 +20,17 @@ namespace gearfem::contact
       throw InputError("Contact/Friction coefficient", to_string_g(options_.friction),
                        "0 for a condensed cycle", "the condensed cycle stores the frictionless operator");
     const double q = solution.q;
+    // The band of the loads the cycle serves: candidates farther open never touch there, so
+    // the searches below look no farther (the solver's search distance is restored on return).
+    const bool banded = band > 0 && band < options_.search_distance;
+    struct Restore
+    {
+      double &value;
+      const double kept;
+      ~Restore() { value = kept; }
+    } restore{options_.search_distance, options_.search_distance};
+    if (banded)
+      options_.search_distance = band;
     // The elastic state of the solution, from its nodal forces, on a zone with twice the
     // solve's margin (the searches at q -/+ h below stay inside it).
     set_zone(scene, q, 2 * options_.search_distance);
@@ -42,7 +53,7 @@ namespace gearfem::contact
 
     CondensedPosition out;
     out.q_build    = q;
-    out.search_distance = options_.search_distance;
+    out.search_distance = banded ? band : options_.search_distance;
     out.load_build = solution.load;
     out.placement[0] = scene.placement[0], out.placement[1] = scene.placement[1];
     out.W = lin.W, out.a = lin.a, out.D = lin.D;
@@ -55,10 +66,15 @@ namespace gearfem::contact
     const double h = std::max(0.5 * std::abs(q), 1e-7);
     std::map<int, double> g_plus, g_minus;
     std::vector<char> smooth(m, 1);
+    // In a band, the searches at q -/+ h reach as far as the rotation by h moves a point, so
+    // that they find every candidate of the band and its curvature is the unbanded one.
+    if (banded)
+      options_.search_distance = band + h * (drive_.kind == Drive::Kind::rotation ? cache_[0].r_max : 1.0);
     for (const auto &c : search(scene, q + h).cand)
       g_plus[key(c.S, c.node)] = c.g;
     for (const auto &c : search(scene, q - h).cand)
       g_minus[key(c.S, c.node)] = c.g;
+    options_.search_distance = banded ? band : restore.kept;
     if (zone_breach_)
       throw SolverError("condense: a projection reads the elastic state outside the contact zone");
     for (int k = 0; k < m; ++k)

@@ -161,6 +161,17 @@ namespace gearfem::contact
                           to_string_g(c.search_distance * 1e6) +
                           " um): the condensed cycle does not cover this load or modification; build it at a "
                           "higher torque or with a larger Contact/Search distance");
+    // A banded cycle stores only the candidates within its search distance of contact at the
+    // build: a rigid closure beyond half of it could bring a tooth pair that has no stored
+    // candidate (which the edge check above cannot see) into contact.
+    for (int k = 0; k < m; ++k)
+      if (-c.a[k] * dqs[k] > 0.5 * c.search_distance)
+        throw SolverError("condensed re-solve: the rigid approach of slave node " + std::to_string(c.cand[k].point.node) +
+                          " of body " + std::to_string(c.cand[k].point.slave_body) + " (" +
+                          to_string_g(-c.a[k] * dqs[k] * 1e6) + " um) is over half the search distance of the stored "
+                          "candidates (" + to_string_g(c.search_distance * 1e6) +
+                          " um): the condensed cycle does not cover this load or modification; build it at a higher "
+                          "torque or with a larger Contact/Search distance");
 
     CondensedSolution out;
     ContactSolution &s = out.solution;

@@ -205,8 +205,10 @@ namespace gearfem::contact
     /// The condensed problem of `solution`, a converged solve of `scene` by this solver
     /// (contact/condensed.h): candidates, W, a, the unmodified gap, its curvature in q, the
     /// modification samples, the force directions and the pressure recovery. Re-runs the
-    /// search and linearisation at the solution's state.
-    CondensedPosition condense(const Scene &scene, const ContactSolution &solution);
+    /// search and linearisation at the solution's state. `band` > 0 (below the search distance)
+    /// keeps only the candidates whose gap at the solution is within it, and becomes the stored
+    /// search distance: the re-solve's edge check then refuses a load that closes half of it.
+    CondensedPosition condense(const Scene &scene, const ContactSolution &solution, double band = 0);
 
   private:
     /// One point of a slave surface (a node, or a Gauss point of a slave face) projected

@@ -197,7 +197,12 @@ namespace gearfem::geometry
     if (!(r.root_radius > 0.0 && r.root_radius <= 1.0))
       throw InputError("Rack/Root radius coefficient", to_string_g(r.root_radius), "(0, 1]",
                        "the cutter tip radius generates the root fillet");
-    require_range("Rack/Tip radius coefficient", r.tip_radius, 0.0, 1.0);
+    // A rounding far below the mesh sizes is a sharp tip that gmsh cannot mesh (1e-12 m ran
+    // past any time limit): 0 or a radius of at least 0.005 m.
+    if (!(r.tip_radius == 0.0 || (r.tip_radius >= min_tip_radius && r.tip_radius <= 1.0)))
+      throw InputError("Rack/Tip radius coefficient", to_string_g(r.tip_radius),
+                       "0 (a sharp tip) or " + to_string_g(min_tip_radius) + " to 1",
+                       "a smaller tooth tip rounding is below any mesh size");
     require_range(gear.name + "/Tip shortening coefficient", gear.tip_shortening, 0.0, 1.0);
 
     GeneratingRack rack;

@@ -26,6 +26,10 @@ namespace gearfem::geometry
   };
 
   /// The basic rack of one gear (ISO 53 terms, coefficients times the module).
+  /// Smallest tooth tip rounding rho_aP* [module] other than 0 (sharp): below it the arc is
+  /// far under any mesh size.
+  inline constexpr double min_tip_radius = 0.005;
+
   struct RackParameters
   {
     enum class Kind

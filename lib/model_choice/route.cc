@@ -14,6 +14,11 @@
 
 namespace gearfem::model_choice
 {
+  /// The candidate band of Solve/Target's cycle (condensed::CycleOptions::band_factor): it is
+  /// re-solved at its own torques only, so a scene keeps the candidates within 4 times the
+  /// approach at the top of its load range, not every node within Contact/Search distance.
+  constexpr double target_band = 4.0;
+
   RoutePlan plan_route(const solve::GearContactInput &in, bool resume, double scene_ratio)
   {
     RoutePlan r;
@@ -112,7 +117,7 @@ namespace gearfem::model_choice
       {
         const auto t0 = std::chrono::steady_clock::now();
         const condensed::CondensedCycle cycle =
-          condensed::cycle_for(*o.model, in, {plan.build_torque, plan.lo, plan.hi}, {4.0, run.out});
+          condensed::cycle_for(*o.model, in, {plan.build_torque, plan.lo, plan.hi}, {4.0, run.out, target_band});
         c.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         c.dofs          = cycle.dofs;
         c.result        = condensed::run_condensed(cycle, in, run);

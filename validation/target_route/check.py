@@ -20,7 +20,7 @@ from vcheck import Checks
 TORQUES = 10
 TOL_DIFF = 1e-3       # condensed vs full: within 0.1 % (docs/model-choice.md, "The condensed cycle")
 RATIO = (0.5, 2.0)    # measured on the run / the true condensation error (validation/error_estimate's bounds)
-MAX_CPU_RATIO = 0.8   # the route pays: auto CPU / full FE CPU
+MAX_CPU_RATIO = 0.7   # the route pays: auto CPU / full FE CPU
 
 
 def run(gearfem, prm, out, log):
