@@ -199,8 +199,9 @@ namespace gearfem::commands
           prm.parse_input(ctx.input_file.string(), "", true, false);
           // parse_input() does not match a value containing '{' against its pattern,
           // and Patterns::Double accepts subnormal numbers that get_double() refuses
-          // (see params/checked.h): check every entry strictly, naming "Section/Entry".
-          params::check_entries(all);
+          // (see params/checked.h): check every entry this command reads strictly, naming
+          // "Section/Entry" (the other commands' entries are theirs to check when they run).
+          params::check_entries(prm);
         }
       catch (const dealii::ExceptionBase &e)
         {
@@ -221,7 +222,7 @@ namespace gearfem::commands
         declare_output(all);
         all.parse_input_from_string(text, "", false);
         prm.parse_input_from_string(text, "", true);
-        params::check_entries(all);
+        params::check_entries(prm); // the entries this job reads (parse_input above)
       }
     catch (const dealii::ExceptionBase &e)
       {

@@ -159,10 +159,19 @@ namespace gearfem::condensed
         p.placement[b] = {contact::Vec2(pl[3 * b], pl[3 * b + 1]), pl[3 * b + 2]};
       const auto a = g.vec("a");
       const std::size_t m = a.size();
-      const auto W = g.mat("W", m, m);
-      p.W = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(W.data(),
-                                                                                                     Eigen::Index(m),
-                                                                                                     Eigen::Index(m));
+      // W straight into its matrix: the file is row-major, the matrix column-major, and the
+      // in-place transpose of the square matrix restores it exactly.
+      std::vector<hsize_t> wd;
+      r.dataset_into(g.get(), g.path(), "W", 2, wd, [&](hsize_t n) {
+        if (n != hsize_t(m) * hsize_t(m))
+          r.fail(g.path() + "/W", "", std::to_string(n) + " values", std::to_string(m) + " x " + std::to_string(m));
+        p.W.resize(Eigen::Index(m), Eigen::Index(m));
+        return p.W.data();
+      });
+      if (wd[0] != m || wd[1] != m)
+        r.fail(g.path() + "/W", "", std::to_string(wd[0]) + " x " + std::to_string(wd[1]),
+               std::to_string(m) + " x " + std::to_string(m));
+      p.W.transposeInPlace();
       auto ev = [&](const char *n) {
         const auto v = g.vec(n, m);
         return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(m)));

@@ -297,6 +297,20 @@ namespace gearfem::io::hdf5
                               int rank, std::vector<hsize_t> &dims,
                               const std::string &hint = "") const
     {
+    std::vector<double> v;
+    dataset_into(group, group_path, name, rank, dims, [&](hsize_t n) {
+      v.resize(n);
+      return v.data();
+    }, hint);
+    return v;
+    }
+
+    /// The same, read into the storage that `storage(n)` returns for its n values (row-major),
+    /// without an intermediate copy.
+    template <typename Storage>
+    void dataset_into(hid_t group, const std::string &group_path, const char *name, int rank,
+                      std::vector<hsize_t> &dims, const Storage &storage, const std::string &hint = "") const
+    {
     const std::string object = group_path + "/" + name;
     const std::string expected = std::to_string(rank) + "-D float64 dataset";
     const htri_t e = H5Lexists(group, name, H5P_DEFAULT);
@@ -318,11 +332,9 @@ namespace gearfem::io::hdf5
     hsize_t n = 1;
     for (hsize_t d : dims)
       n *= d;
-    std::vector<double> v(n);
-    if (n > 0 &&
-        H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+    double *to = storage(n);
+    if (n > 0 && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, to) < 0)
       fail(object, "", "unreadable", expected, "corrupt or truncated file?");
-    return v;
     }
 
     /// Open `name` (an object path) as a dataset only to read its string attribute.
