@@ -22,8 +22,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace batch_job
   {
     void declare(dealii::ParameterHandler &prm)
@@ -147,7 +145,6 @@ namespace gearfem::commands
 
   Command batch_command()
   {
-    using namespace batch_job;
     Command c;
     c.name        = "batch";
     c.summary     = "the solve chain over the designs of a study (MPI, restartable): batch.csv, batch.h5";
@@ -168,8 +165,8 @@ namespace gearfem::commands
                     "  mpirun -np 2 gearfem batch inputs/batch_demo.prm --output-dir results/batch_demo\n"
                     "  gearfem batch inputs/batch_demo.prm --slice 1/4   (job-array task 1 of 4)\n"
                     "  gearfem batch inputs/batch_demo.prm --merge       (aggregate the slices)\n";
-    c.declare            = declare;
-    c.run                = run;
+    c.declare            = batch_job::declare;
+    c.run                = batch_job::run;
     c.creates_output_dir = true;
     return c;
   }

@@ -30,8 +30,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace calibrate_job
   {
     namespace an = analytical;
@@ -139,7 +137,6 @@ namespace gearfem::commands
 
   Command calibrate_command()
   {
-    using namespace calibrate_job;
     Command c;
     c.name        = "calibrate";
     c.summary     = "fit the analytical mesh model to FE STE (gearfem solve results) and write stiffness tables";
@@ -155,8 +152,8 @@ namespace gearfem::commands
                     "Sample run:\n"
                     "  gearfem calibrate validation/analytical_vs_fe/calibrate.prm   (after the Parker\n"
                     "  sweeps: validation/parker_ste/sweeps.sh)\n";
-    c.declare = declare;
-    c.run     = run;
+    c.declare = calibrate_job::declare;
+    c.run     = calibrate_job::run;
     return c;
   }
 } // namespace gearfem::commands

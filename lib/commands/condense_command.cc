@@ -20,8 +20,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace condense_job
   {
     void declare(dealii::ParameterHandler &prm)
@@ -76,7 +74,6 @@ namespace gearfem::commands
 
   Command condense_command()
   {
-    using namespace condense_job;
     Command c;
     c.name        = "condense";
     c.summary     = "the condensed mesh cycle: FE once over the cycle, re-solved later in milliseconds per position";
@@ -94,8 +91,8 @@ namespace gearfem::commands
                     "  gearfem condense inputs/demo_fixed_mesh.prm --output-dir results/demo_condensed\n"
                     "  gearfem solve inputs/demo_fixed_mesh.prm --condensed results/demo_condensed/condensed.h5 "
                     "--output-dir results/demo_on_cycle\n";
-    c.declare = declare;
-    c.run     = run;
+    c.declare = condense_job::declare;
+    c.run     = condense_job::run;
     return c;
   }
 } // namespace gearfem::commands

@@ -14,8 +14,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace dynamics_job
   {
     namespace dyn = gearfem::dynamics;
@@ -60,7 +58,6 @@ namespace gearfem::commands
 
   Command dynamics_command()
   {
-    using namespace dynamics_job;
     Command c;
     c.name = "dynamics";
     c.summary = "nonlinear gear-pair dynamics: time response, speed sweeps, spectra";
@@ -75,7 +72,7 @@ namespace gearfem::commands
       "  gearfem dynamics inputs/dynamics_kahraman_singh.prm\n"
       "  gearfem dynamics inputs/dynamics_seed004.prm";
     c.declare = [](dealii::ParameterHandler &prm) { dynamics::declare_parameters(prm); };
-    c.run = run;
+    c.run = dynamics_job::run;
     return c;
   }
 } // namespace gearfem::commands

@@ -22,8 +22,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace export_job
   {
     void declare(dealii::ParameterHandler &prm)
@@ -142,7 +140,6 @@ namespace gearfem::commands
 
   Command export_command()
   {
-    using namespace export_job;
     Command c;
     c.name        = "export";
     c.summary     = "write STE and mesh-stiffness tables for ROSS, multibody codes (spline, TE) and force-law codes";
@@ -153,8 +150,8 @@ namespace gearfem::commands
                     "tables), force_table.csv (two-sided F(theta, delta), torque tables). Contract: docs/export.md.\n"
                     "Sample run: validation/multibody_exports/run.sh (condense, export, dynamics, and an\n"
                     "independent integration of the exported ROSS arrays); case files in that folder.\n";
-    c.declare = declare;
-    c.run     = run;
+    c.declare = export_job::declare;
+    c.run     = export_job::run;
     return c;
   }
 } // namespace gearfem::commands

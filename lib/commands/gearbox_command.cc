@@ -14,8 +14,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace gearbox_job
   {
     namespace gb = gearfem::gearbox;
@@ -75,7 +73,6 @@ namespace gearfem::commands
 
   Command gearbox_command()
   {
-    using namespace gearbox_job;
     Command c;
     c.name = "gearbox";
     c.summary = "Gearbox rating: planetary/parallel stages, load spectrum, Miner life, AGMA 925 scuffing";
@@ -98,8 +95,8 @@ namespace gearfem::commands
       "  gearfem gearbox inputs/seed001_gearbox_thesis_stresses.prm\n"
       "  gearfem gearbox inputs/seed001_gearbox_fe.prm   (Stress source = FE: every mesh by\n"
       "  `gearfem solve` sector models, section `FE stresses`; a few minutes)";
-    c.declare = declare;
-    c.run = run;
+    c.declare = gearbox_job::declare;
+    c.run = gearbox_job::run;
     return c;
   }
 } // namespace gearfem::commands

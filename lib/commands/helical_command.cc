@@ -12,8 +12,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace helical_job
   {
     void declare(dealii::ParameterHandler &prm) { helical::declare_request(prm); }
@@ -64,7 +62,6 @@ namespace gearfem::commands
 
   Command helical_command()
   {
-    using namespace helical_job;
     Command c;
     c.name        = "helical";
     c.summary     = "a helical pair by face-width slicing on the condensed cycle of its transverse section";
@@ -80,8 +77,8 @@ namespace gearfem::commands
                     "same transverse section (docs/helical.md).\n"
                     "Sample runs:\n"
                     "  gearfem helical inputs/helical_demo.prm --output-dir results/helical_demo\n";
-    c.declare = declare;
-    c.run     = run;
+    c.declare = helical_job::declare;
+    c.run     = helical_job::run;
     return c;
   }
 } // namespace gearfem::commands

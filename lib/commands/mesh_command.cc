@@ -22,8 +22,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace mesh_job
   {
     void declare(dealii::ParameterHandler &prm)
@@ -185,7 +183,6 @@ namespace gearfem::commands
 
   Command mesh_command()
   {
-    using namespace mesh_job;
     Command c;
     c.name        = "mesh";
     c.summary     = "gmsh meshes of both gears (gear1.msh, gear2.msh), quality report, mesh.png";
@@ -196,8 +193,8 @@ namespace gearfem::commands
                     "Sample runs:\n"
                     "  gearfem mesh inputs/mesh_demo.prm\n"
                     "  gearfem mesh inputs/mesh_demo.prm --validate";
-    c.declare = declare;
-    c.run     = run;
+    c.declare = mesh_job::declare;
+    c.run     = mesh_job::run;
     return c;
   }
 } // namespace gearfem::commands

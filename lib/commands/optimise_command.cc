@@ -11,8 +11,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace optimise_job
   {
     /// Problem = tip relief: the FE model in the loop (lib/optimise/relief.h).
@@ -66,7 +64,6 @@ namespace gearfem::commands
 
   Command optimise_command()
   {
-    using namespace optimise_job;
     Command c;
     c.name    = "optimise";
     c.summary = "Profile optimisation: Koronaios 2021 B-spline tooth (min. curvature) or tip relief for min. STE (FE in the loop)";
@@ -95,7 +92,7 @@ namespace gearfem::commands
       "  gearfem optimise --validate inputs/seed003_opt_case2.prm\n"
       "  gearfem optimise inputs/tip_relief_opt.prm";
     c.declare = optimise::declare_study_parameters;
-    c.run     = run;
+    c.run     = optimise_job::run;
     return c;
   }
 } // namespace gearfem::commands

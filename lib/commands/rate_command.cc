@@ -23,8 +23,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace rate_job
   {
     namespace an = gearfem::analytical;
@@ -139,7 +137,6 @@ namespace gearfem::commands
 
   Command rate_command()
   {
-    using namespace rate_job;
     Command c;
     c.name = "rate";
     c.summary = "ISO 6336 and AGMA 2101/908 ratings with every factor, plus analytical mesh stiffness";
@@ -156,8 +153,8 @@ namespace gearfem::commands
       "Sample runs:\n"
       "  gearfem rate inputs/seed001_23_69_rate.prm\n"
       "  gearfem rate inputs/internal_rate.prm";
-    c.declare = declare;
-    c.run = run;
+    c.declare = rate_job::declare;
+    c.run = rate_job::run;
     return c;
   }
 } // namespace gearfem::commands

@@ -16,8 +16,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace solve_job
   {
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
@@ -45,7 +43,6 @@ namespace gearfem::commands
 
   Command solve_command()
   {
-    using namespace solve_job;
     Command c;
     c.name        = "solve";
     c.summary     = "loaded static contact over the mesh cycle: STE, mesh stiffness, load sharing, pressure, root stress";
@@ -81,7 +78,7 @@ namespace gearfem::commands
                     "  gearfem solve validation/parker_ste/parker_ste.prm --output-dir results/parker\n"
                     "  gearfem solve inputs/deviations_demo.prm\n";
     c.declare = route::declare_request;
-    c.run     = run;
+    c.run     = solve_job::run;
     return c;
   }
 } // namespace gearfem::commands

@@ -23,8 +23,6 @@
 
 namespace gearfem::commands
 {
-  // Named, not anonymous: the library compiles in unity batches, where every command
-  // file has its own declare and run.
   namespace tolerance_job
   {
     /// Thrown on ranks > 0 when rank 0 has failed and reports it: they leave without a message.
@@ -178,7 +176,6 @@ namespace gearfem::commands
 
   Command tolerance_command()
   {
-    using namespace tolerance_job;
     Command c;
     c.name        = "tolerance";
     c.summary     = "Monte Carlo tolerance study: deviations drawn within an ISO 1328-1 grade, each over the hunting cycle";
@@ -194,8 +191,8 @@ namespace gearfem::commands
                     "  gearfem tolerance inputs/tolerance_demo.prm\n"
                     "  mpirun -np 2 gearfem tolerance inputs/tolerance_demo.prm\n";
     c.creates_output_dir = true;
-    c.declare = declare;
-    c.run     = run;
+    c.declare = tolerance_job::declare;
+    c.run     = tolerance_job::run;
     return c;
   }
 } // namespace gearfem::commands

@@ -12,6 +12,25 @@
 
 namespace gearfem::contact
 {
+  /// Edges of the stored set: a candidate next to a slave node of the scene that is not a
+  /// candidate (the re-solve checks how far their contact may close).
+  void TwoBodyContact::mark_edges(const Scene &scene, const SearchResult &sr, CondensedPosition &out) const
+  {
+    std::set<int> is_candidate, is_slave;
+    for (const auto &c : sr.cand)
+      is_candidate.insert(key(c.S, c.node));
+    for (const auto &[b, n] : slaves(scene))
+      is_slave.insert(key(b, n));
+    for (std::size_t k = 0; k < sr.cand.size(); ++k)
+      {
+        const auto &c = sr.cand[k];
+        for (const int f : cache_[c.S - 1].node_faces[c.node])
+          for (const int n : surface(c.S).faces()[f].nodes)
+            if (is_slave.count(key(c.S, n)) && !is_candidate.count(key(c.S, n)))
+              out.cand[k].edge = true;
+      }
+  }
+
   CondensedPosition TwoBodyContact::condense(const Scene &scene, const ContactSolution &solution, double band)
   {
     if (!solution.converged)
@@ -125,21 +144,7 @@ namespace gearfem::contact
     for (int k = 0; k < m; ++k)
       out.cand[k].point = filled.points[k], out.cand[k].smooth = smooth[k];
 
-    // Edges of the stored set: a candidate next to a slave node of the scene that is not a
-    // candidate.
-    std::set<int> is_candidate, is_slave;
-    for (const auto &c : sr.cand)
-      is_candidate.insert(key(c.S, c.node));
-    for (const auto &[b, n] : slaves(scene))
-      is_slave.insert(key(b, n));
-    for (int k = 0; k < m; ++k)
-      {
-        const auto &c = sr.cand[k];
-        for (const int f : cache_[c.S - 1].node_faces[c.node])
-          for (const int n : surface(c.S).faces()[f].nodes)
-            if (is_slave.count(key(c.S, n)) && !is_candidate.count(key(c.S, n)))
-              out.cand[k].edge = true;
-      }
+    mark_edges(scene, sr, out);
 
     // Pressure recovery as a linear map of the candidate forces.
     out.pressure.assign(m, {});

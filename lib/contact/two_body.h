@@ -248,6 +248,8 @@ namespace gearfem::contact
       std::vector<Candidate> cand;
       std::vector<FaceSample> samples;
     };
+    /// condense(): flag the stored candidates next to a slave node outside the set.
+    void mark_edges(const Scene &scene, const SearchResult &sr, CondensedPosition &out) const;
     /// The contact problem linearised about the current state: g = ghat + a q + W lambda.
     struct Linearisation
     {
