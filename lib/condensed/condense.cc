@@ -24,7 +24,7 @@ namespace gearfem::condensed
       *out << "model: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3) << model->setup_seconds()
            << " s" << std::endl;
     CycleOptions options;
-    options.scene_ratio = cp.scene_ratio;
+    options.scene_ratio = scene_ratio(CycleUse::variants, cp.scene_ratio);
     options.out         = out;
     return cycle_for(*model, in, range, options);
   }

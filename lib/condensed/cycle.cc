@@ -116,6 +116,13 @@ namespace gearfem::condensed
     return r;
   }
 
+  double scene_ratio(CycleUse use, double requested)
+  {
+    if (requested >= 0)
+      return requested;
+    return use == CycleUse::slices ? 0.0 : 4.0;
+  }
+
   CondensedCycle cycle_for(contact::GearContactModel &model, const solve::GearContactInput &in,
                            const CycleRange &range, const CycleOptions &options)
   {

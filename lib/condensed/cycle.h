@@ -119,6 +119,16 @@ namespace gearfem::condensed
   /// Solve/Torques for no torques.
   CycleRange cycle_range(const std::vector<double> &torques, CycleUse use, double build = 0);
 
+  /// The one scene-split rule of a condensed cycle (CycleOptions::scene_ratio) for `use`:
+  /// `requested` >= 0 (`Condense/Scene torque ratio` set) is taken as it is; < 0 (`auto`) gives
+  /// 4 (no re-solve more than a factor 2 from its build) for every use but `slices`, and no
+  /// split (one build per slave configuration) for the transverse section of helical slices.
+  /// There the build is at the largest served torque and the slices re-solve it from an eighth
+  /// to 4 times that: on the Parker section (validation/helical) the slice results move by at
+  /// most 2e-4 against the split cycle, far below the slicing's own error (about 1 % between 21
+  /// and 51 slices), for a third of the build (one solve and one condensation per position).
+  double scene_ratio(CycleUse use, double requested);
+
   struct CycleOptions
   {
     /// Largest torque ratio one scene spans (`Condense/Scene torque ratio`); 0: no split.

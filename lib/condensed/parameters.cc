@@ -25,14 +25,16 @@ namespace gearfem::condensed
                       "this range (each solved at the build torque clamped into its own range), and refuses "
                       "torques outside it. Units: N m. Allowed: 0 < low <= build torque <= high; 0, 0 takes a "
                       "quarter of the smallest and twice the largest of Solve/Torques.");
-    prm.declare_entry("Scene torque ratio", "4", dealii::Patterns::Double(),
+    prm.declare_entry("Scene torque ratio", "auto", dealii::Patterns::Anything(),
                       "The condensation is exact at the load it was solved at, and its error grows with the "
                       "ratio of a re-solve's torque to that load (the candidates' projections and the tip-corner "
                       "rounding enter only through the gap's curvature). The torque range is cut at build torque x "
                       "ratio^(j + 1/2) and each part solved at the build torque or at its geometric middle: no "
                       "re-solve is more than sqrt(ratio) from its build (ratio 4: within 0.1 % of the full FE on the "
                       "three pairs of validation/speed_vs_error). Each part costs one more solve per position. "
-                      "Units: none. Allowed: 0 (no split: one build per slave configuration) or 1.5 to 1e6.");
+                      "auto: 4, except for the transverse section of gearfem helical, which is not split (its "
+                      "slices move by at most 2e-4 against ratio 4 on validation/helical, for a third of the build). "
+                      "Units: none. Allowed: auto, 0 (no split: one build per slave configuration) or 1.5 to 1e6.");
     prm.declare_entry("Table file", "", dealii::Patterns::Anything(),
                       "Also write the FE-exact mesh torque table T(theta, delta) (docs/mesh-tables.md) to this file "
                       "in the output folder: contact solves on the cycle under rotation control at each position "
@@ -55,7 +57,8 @@ namespace gearfem::condensed
     p.build_torque = params::get_double(prm, "Build torque");
     const auto range = params::get_doubles(prm, "Torque range");
     p.torque_lo = range.at(0), p.torque_hi = range.at(1);
-    p.scene_ratio        = params::get_double(prm, "Scene torque ratio");
+    const std::string ratio = dealii::Utilities::trim(prm.get("Scene torque ratio"));
+    p.scene_ratio           = ratio == "auto" ? -1.0 : params::get_double(prm, "Scene torque ratio");
     p.table_file         = dealii::Utilities::trim(prm.get("Table file"));
     p.table_compressions = params::get_integer(prm, "Table compressions");
     const double b_um    = params::get_double(prm, "Backlash");
@@ -64,8 +67,8 @@ namespace gearfem::condensed
     require_range("Condense/Build torque", p.build_torque, 0.0, 1e9, "N m");
     require_range("Condense/Torque range", p.torque_lo, 0.0, 1e9, "N m");
     require_range("Condense/Torque range", p.torque_hi, 0.0, 1e9, "N m");
-    if (!(p.scene_ratio == 0 || (p.scene_ratio >= 1.5 && p.scene_ratio <= 1e6)))
-      throw InputError("Condense/Scene torque ratio", to_string_g(p.scene_ratio), "0 (no split) or 1.5 to 1e6");
+    if (ratio != "auto" && !(p.scene_ratio == 0 || (p.scene_ratio >= 1.5 && p.scene_ratio <= 1e6)))
+      throw InputError("Condense/Scene torque ratio", ratio, "auto, 0 (no split) or 1.5 to 1e6");
     if (p.table_compressions < 4)
       throw InputError("Condense/Table compressions", std::to_string(p.table_compressions), ">= 4");
     if (!std::isfinite(b_um) || b_um > 1e4)

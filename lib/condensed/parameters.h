@@ -15,8 +15,9 @@ namespace gearfem::condensed
     /// Torques a re-solve may take [N m]; 0: a quarter of the smallest and twice the
     /// largest of Solve/Torques.
     double torque_lo = 0, torque_hi = 0;
-    /// Largest torque ratio one scene spans (condensed::CycleOptions); 0: no split.
-    double scene_ratio = 4;
+    /// Largest torque ratio one scene spans (condensed::CycleOptions); 0: no split; < 0
+    /// (`auto`): the rule of the cycle's use (condensed::scene_ratio).
+    double scene_ratio = -1;
     /// FE-exact T(theta, delta) table (condensed/table.h) written to this file in the output
     /// folder; empty: none.
     std::string table_file;

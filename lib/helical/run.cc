@@ -130,7 +130,8 @@ namespace gearfem::helical
           *ro.out << "transverse section: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3)
                   << model->setup_seconds() << " s; condensing " << in.positions().size()
                   << " sections for torques " << range.lo << " to " << range.hi << " N m\n";
-        cycle = condensed::cycle_for(*model, in, range, {ro.scene_ratio, ro.out});
+        cycle = condensed::cycle_for(*model, in, range,
+                                     {condensed::scene_ratio(condensed::CycleUse::slices, ro.scene_ratio), ro.out});
         run.setup_seconds = model->setup_seconds();
         run.build_seconds = since(t0);
         if (!ro.write_cycle.empty())

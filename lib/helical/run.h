@@ -49,8 +49,9 @@ namespace gearfem::helical
     std::ostream *out = nullptr; ///< progress i/N with ETA; null: quiet
     /// The condensed cycle's torques (condensed/cycle.h): 0 takes the largest torque, and the
     /// range an eighth of the smallest to 4 times the largest (slices of a misaligned face
-    /// carry from nothing to several times the mean).
-    double build_torque = 0, torque_lo = 0, torque_hi = 0, scene_ratio = 4;
+    /// carry from nothing to several times the mean); scene_ratio < 0: the slices' rule
+    /// (condensed::scene_ratio).
+    double build_torque = 0, torque_lo = 0, torque_hi = 0, scene_ratio = -1;
     std::filesystem::path cycle_file; ///< read this condensed cycle instead of building one
     std::filesystem::path write_cycle; ///< write the built cycle here (empty: not written)
   };

@@ -156,7 +156,7 @@ def main():
     # 7. Cost: the 21-slice cycle after set-up against the spur full-FE cycle of the same run.
     j = run["b15_n21"][0]
     hel = j["build_seconds"] - j["setup_seconds"] + j["sweep_seconds"]
-    c.at_most("21-slice helical cycle (condense + sweep) / spur full-FE cycle, after set-up", hel / fe_sweep, 5.0,
+    c.at_most("21-slice helical cycle (condense + sweep) / spur full-FE cycle, after set-up", hel / fe_sweep, 4.0,
               "requirement (slices share one factorised section)")
     # Timings stay out of the tracked table (they change from run to run): the check rows above
     # carry the ratio, the log and validation/RESULTS.md the seconds.

@@ -218,6 +218,17 @@ TEST(Condensed, SceneSplitBoundsTheLoadRatioAndKeepsADegenerateRange)
   EXPECT_NO_THROW(one.at(0, 300));
 }
 
+TEST(Condensed, SceneRatioRuleOfEachUse)
+{
+  // auto (< 0): a factor-2 bound for the cycles of variants and given torques, no split for the
+  // transverse section of helical slices; a set ratio is taken as it is (docs/helical.md).
+  EXPECT_EQ(condensed::scene_ratio(condensed::CycleUse::variants, -1), 4.0);
+  EXPECT_EQ(condensed::scene_ratio(condensed::CycleUse::given_torques, -1), 4.0);
+  EXPECT_EQ(condensed::scene_ratio(condensed::CycleUse::slices, -1), 0.0);
+  EXPECT_EQ(condensed::scene_ratio(condensed::CycleUse::slices, 4), 4.0);
+  EXPECT_EQ(condensed::scene_ratio(condensed::CycleUse::variants, 0), 0.0);
+}
+
 TEST(Condensed, TorqueTableMatchesRotationControlledFullSolves)
 {
   // Independent reference: the full FE under rotation control (GearContactModel::
