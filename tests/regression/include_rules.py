@@ -63,7 +63,7 @@ def read_layering(source_dir):
 
 ALLOWED, SUBMODULE_ONLY = read_layering(sys.argv[1] if len(sys.argv) > 1 else '.')
 # Modules (or their light parts) that must not see deal.II, gmsh or PETSc.
-LIGHT = {'base', 'io', 'geometry', 'analytical', 'rating', 'calibration', 'dynamics', 'gearbox', 'optimise'}
+LIGHT = {'base', 'io', 'geometry', 'analytical', 'rating', 'calibration', 'dynamics', 'gearbox', 'optimise', 'shafts'}
 # Files of light modules that are heavy by design: ParameterHandler bindings (their own
 # targets), the optimiser's FE-in-the-loop tip-relief part, the gearbox FE stress source.
 HEAVY_FILES = re.compile(r'(^|/)(parameters|relief[a-z_]*)\.(h|cc)$|^gearbox/fe/')
