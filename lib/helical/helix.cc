@@ -3,6 +3,7 @@
 #include "base/errors.h"
 #include "base/units.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gearfem::helical
@@ -66,7 +67,36 @@ namespace gearfem::helical
       g += m.end_relief * std::max(0.0, (std::abs(z) - (0.5 * b - m.end_relief_length)) / m.end_relief_length);
     const double f = m.mesh_misalignment(alpha_wt);
     g += f >= 0 ? f * (0.5 * u + 0.5) : f * (0.5 * u - 0.5);
+    const auto &pz = m.profile_z, &pg = m.profile_gap;
+    if (!pz.empty())
+      {
+        if (z <= pz.front())
+          g += pg.front();
+        else if (z >= pz.back())
+          g += pg.back();
+        else
+          {
+            const std::size_t i = std::size_t(std::upper_bound(pz.begin(), pz.end(), z) - pz.begin());
+            const double t = (z - pz[i - 1]) / (pz[i] - pz[i - 1]);
+            g += (1 - t) * pg[i - 1] + t * pg[i];
+          }
+      }
     return g;
+  }
+
+  void check_profile(const LeadModification &m, double b)
+  {
+    if (m.profile_z.size() != m.profile_gap.size())
+      throw InputError("lead profile", std::to_string(m.profile_gap.size()) + " gaps",
+                       "one per position (" + std::to_string(m.profile_z.size()) + ")");
+    for (std::size_t i = 0; i < m.profile_z.size(); ++i)
+      {
+        if (!(std::abs(m.profile_z[i]) <= 0.5 * b * (1 + 1e-12)) || (i > 0 && !(m.profile_z[i] > m.profile_z[i - 1])))
+          throw InputError("lead profile position", to_string_g(m.profile_z[i] / units::mm) + " mm",
+                           "increasing, within -b/2 to b/2 (" + to_string_g(0.5 * b / units::mm) + " mm)");
+        if (!(std::abs(m.profile_gap[i]) < 1e-2))
+          throw InputError("lead profile gap", to_string_g(m.profile_gap[i] / units::um) + " um", "finite, below 10 mm");
+      }
   }
 
   void check(const HelixInput &in, double b)
@@ -81,6 +111,7 @@ namespace gearfem::helical
                        "-1 (one normal module), 0 (uncoupled) or up to the face width " + to_string_g(b / units::mm) +
                          " mm");
     const auto &m = in.lead;
+    check_profile(m, b);
     require_range("Helical/Crowning", m.crowning / units::um, 0.0, 1000.0, "um");
     require_range("Helical/End relief", m.end_relief / units::um, 0.0, 1000.0, "um");
     require_range("Helical/End relief length", m.end_relief_length / units::mm, 0.0, 0.5 * b / units::mm, "mm");

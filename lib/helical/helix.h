@@ -28,6 +28,10 @@ namespace gearfem::helical
     /// distance changes along the face, which tilts the contact by f sin(alpha_wt) (the
     /// change of the slices' working pressure angle with it is not represented).
     double deviation = 0;
+    /// A gap offset along the face given point by point (z [m] over [-b/2, b/2], increasing;
+    /// gap [m]), interpolated linearly and held at the ends; empty: none. The shaft-and-bearing
+    /// coupling (system_deflection/coupled.h) gives the mismatch of its deflections this way.
+    std::vector<double> profile_z, profile_gap;
     /// The linear part: f_Hbeta + f_Sigma_beta cos(alpha_wt) + f_Sigma_delta sin(alpha_wt).
     double mesh_misalignment(double alpha_wt) const;
   };
@@ -86,9 +90,13 @@ namespace gearfem::helical
   std::vector<double> slice_centres(double b, int n);
 
   /// The gap offset of `m` at axial position z (material removed, >= 0) [m]: the crowning
-  /// C_beta (2z/b)^2, the end reliefs, and the mesh misalignment as a linear opening that is
-  /// zero at the tight end.
+  /// C_beta (2z/b)^2, the end reliefs, the mesh misalignment as a linear opening that is
+  /// zero at the tight end, and the point-by-point profile.
   double lead_gap(const LeadModification &m, double z, double b, double alpha_wt);
+
+  /// InputError for a profile whose positions are not increasing within [-b/2, b/2], whose
+  /// lengths differ or whose gaps are not finite.
+  void check_profile(const LeadModification &m, double face_width);
 
   /// InputError naming the `Helical` entry of the first value out of range.
   void check(const HelixInput &in, double face_width);

@@ -216,12 +216,12 @@ namespace gearfem::helical
     return long(wrap_index(t1 - wrap, z_[0])) * z_[1] + wrap_index(t2 + wrap, z_[1]);
   }
 
-  void SlicedPair::prepare(Sub &u, double load) const
+  void SlicedPair::prepare(Sub &u, double load, const LeadModification &lead) const
   {
     const double b = o_.helix.face_width;
     u.p = &cycle_.at(u.g, std::clamp(load, cycle_.torque_lo, cycle_.torque_hi));
     u.offset =
-      resolver_.offsets(*u.p).array() + lead_gap(o_.lead, slice_centres(b, o_.slices)[std::size_t(u.slice)], b, o_.alpha_wt);
+      resolver_.offsets(*u.p).array() + lead_gap(lead, slice_centres(b, o_.slices)[std::size_t(u.slice)], b, o_.alpha_wt);
     u.keep.clear();
     for (std::size_t c = 0; c < u.p->size(); ++c)
       if (u.p->cand[c].point.force > 0 || u.p->cand[c].point.gap < initial_gap)
@@ -280,7 +280,7 @@ namespace gearfem::helical
     return cn.iterations;
   }
 
-  bool SlicedPair::rescene(std::vector<Sub> &sub, const System &s) const
+  bool SlicedPair::rescene(std::vector<Sub> &sub, const System &s, const LeadModification &lead) const
   {
     // The scene of each sub-slice at its own load per unit width (as the 2-D section's).
     bool changed = false;
@@ -291,7 +291,7 @@ namespace gearfem::helical
           T -= s.arm[u.first + r] * s.solution.lambda[u.first + r];
         const auto *p = &cycle_.at(u.g, std::clamp(T / u.weight, cycle_.torque_lo, cycle_.torque_hi));
         if (T > 0 && p != u.p)
-          prepare(u, T / u.weight), changed = true;
+          prepare(u, T / u.weight, lead), changed = true;
       }
     return changed;
   }
@@ -366,14 +366,17 @@ namespace gearfem::helical
       }
   }
 
-  HelicalResult SlicedPair::solve(double phi1, double torque) const
+  HelicalResult SlicedPair::solve(double phi1, double torque) const { return solve(phi1, torque, o_.lead); }
+
+  HelicalResult SlicedPair::solve(double phi1, double torque, const LeadModification &lead) const
   {
+    check_profile(lead, o_.helix.face_width);
     require_greater("Solve/Torques", torque, 0.0, "N m");
     (void)cycle_.at(0, torque); // SolverError naming the cycle's torque range outside it
     const auto t0 = Clock::now();
     std::vector<Sub> sub = subs(phi1);
     for (auto &u : sub)
-      prepare(u, torque);
+      prepare(u, torque, lead);
     System s;
     int iterations = 0;
     try
@@ -385,7 +388,7 @@ namespace gearfem::helical
             const double q = assemble(s, sub, torque);
             iterations += rotate(s, sub, torque, q);
             s.iterations = iterations;
-            if ((pass < 6 && rescene(sub, s)) || grow(sub, s))
+            if ((pass < 6 && rescene(sub, s, lead)) || grow(sub, s))
               continue;
             break;
           }
@@ -396,7 +399,7 @@ namespace gearfem::helical
         throw SolverError("helical position phi1 = " + to_string_g(phi1 / units::deg) + " deg, torque " +
                           to_string_g(torque) + " N m: " + e.what());
       }
-    HelicalResult h = evaluate(phi1, torque, sub, s);
+    HelicalResult h = evaluate(phi1, torque, sub, s, lead);
     h.iterations    = iterations;
     h.seconds       = since(t0);
     return h;

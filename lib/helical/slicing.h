@@ -118,6 +118,9 @@ namespace gearfem::helical
     /// fails or leaves the stored candidates. A slice whose own load per unit width lies
     /// outside the range takes the nearest stored scene.
     HelicalResult solve(double phi1, double torque) const;
+    /// The same with the lead modification `lead` in place of the options' (the shaft coupling
+    /// iterates on it without rebuilding the pair).
+    HelicalResult solve(double phi1, double torque, const LeadModification &lead) const;
     const SlicingOptions &options() const { return o_; }
 
   private:
@@ -135,13 +138,14 @@ namespace gearfem::helical
     // per sub-slice at its own load, and candidates that would penetrate (each true when the
     // problem changed); the coverage of the contact by the stored candidates.
     long pair_key(int t1, int t2, long wrap) const;
-    void prepare(Sub &u, double load) const;
+    void prepare(Sub &u, double load, const LeadModification &lead) const;
     double assemble(System &s, std::vector<Sub> &sub, double torque) const;
     int rotate(System &s, const std::vector<Sub> &sub, double torque, double q) const;
-    bool rescene(std::vector<Sub> &sub, const System &s) const;
+    bool rescene(std::vector<Sub> &sub, const System &s, const LeadModification &lead) const;
     bool grow(std::vector<Sub> &sub, const System &s) const;
     void check_coverage(const std::vector<Sub> &sub, const System &s) const;
-    HelicalResult evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const;
+    HelicalResult evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s,
+                           const LeadModification &lead) const;
     /// The root stress of each slice from its section load (helical/slicing_post.cc): `tau`
     /// the contact torque and `sig` the fillet stresses (pinion, gear) per tooth pair and slice.
     void root_stresses(HelicalResult &h, const std::map<long, Eigen::VectorXd> &tau,

@@ -66,7 +66,8 @@ namespace gearfem::helical
       }
   }
 
-  HelicalResult SlicedPair::evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s) const
+  HelicalResult SlicedPair::evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s,
+                                     const LeadModification &lead) const
   {
     const int N     = o_.slices;
     const double b  = o_.helix.face_width, dz = b / N;
@@ -87,7 +88,7 @@ namespace gearfem::helical
         auto &r    = h.slices[std::size_t(k)];
         r.z        = zc[std::size_t(k)];
         r.phi1     = phi1 + o_.helix.roll_per_length * r.z;
-        r.lead_gap = lead_gap(o_.lead, r.z, b, o_.alpha_wt);
+        r.lead_gap = lead_gap(lead, r.z, b, o_.alpha_wt);
       }
     std::map<long, std::vector<double>> lines;
     // Per tooth pair and slice: contact torque, and the weighted fillet stresses of the sections.

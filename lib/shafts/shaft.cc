@@ -298,19 +298,23 @@ namespace gearfem::shafts
     return u;
   }
 
-  Solution solve(const System &system, const std::vector<PointLoad> &loads)
+  Solution solve(const System &system, const std::vector<PointLoad> &loads) { return solve_cases(system, {loads}).front(); }
+
+  std::vector<Solution> solve_cases(const System &system, const std::vector<std::vector<PointLoad>> &cases)
   {
+    std::vector<PointLoad> all;
+    for (const auto &c : cases)
+      all.insert(all.end(), c.begin(), c.end());
     if (system.shafts.empty())
       throw InputError("System shafts", "(none)", "at least one shaft");
     for (const auto &s : system.shafts)
       s.validate();
-    const Layout l = layout(system, loads);
+    const Layout l = layout(system, all);
     // Seat nodes of bearings on a housing stiffness come after the shaft nodes.
     int n_nodes = l.n_nodes;
     const std::vector<int> seat = seats(system, n_nodes);
     const int n = 6 * n_nodes;
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
     for (std::size_t s = 0; s < system.shafts.size(); ++s)
       {
         const auto &sh = system.shafts[s];
@@ -363,14 +367,6 @@ namespace gearfem::shafts
               spring(6 * a + d, 6 * b + d, c.stiffness[std::size_t(d)]);
           }
       }
-    for (const auto &p : loads)
-      {
-        if (!p.force.allFinite() || !p.moment.allFinite())
-          throw InputError("load", "a non-finite force or moment", "finite values");
-        const int node = l.node(p.shaft, p.z, "load position");
-        f.segment<3>(6 * node) += p.force;
-        f.segment<3>(6 * node + 3) += p.moment;
-      }
     // Rigid supports: eliminate the constrained DoFs (u = 0 there).
     std::vector<int> free;
     for (int i = 0; i < n; ++i)
@@ -378,34 +374,46 @@ namespace gearfem::shafts
         free.push_back(i);
     const int m = int(free.size());
     Eigen::MatrixXd Kf(m, m);
-    Eigen::VectorXd ff(m);
     for (int i = 0; i < m; ++i)
-      {
-        ff[i] = f[free[std::size_t(i)]];
-        for (int j = 0; j < m; ++j)
-          Kf(i, j) = K(free[std::size_t(i)], free[std::size_t(j)]);
-      }
+      for (int j = 0; j < m; ++j)
+        Kf(i, j) = K(free[std::size_t(i)], free[std::size_t(j)]);
     const Eigen::LLT<Eigen::MatrixXd> llt(Kf);
     if (llt.info() != Eigen::Success || !(llt.rcond() > 1e-14))
       throw InputError("System bearings", "a shaft with a free rigid-body motion",
                        "bearings and couplings that hold every shaft radially, axially and in torsion");
-    const Eigen::VectorXd uf = llt.solve(ff);
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
-    for (int i = 0; i < m; ++i)
-      u[free[std::size_t(i)]] = uf[i];
-    if (!u.allFinite())
-      throw SolverError("shaft system: a non-finite displacement");
-
-    Solution sol;
-    for (std::size_t s = 0; s < system.shafts.size(); ++s)
-      for (std::size_t k = 0; k < l.z[s].size(); ++k)
-        {
-          NodeResult r;
-          r.shaft = int(s), r.z = l.z[s][k];
-          r.u     = u.segment<6>(6 * (l.first[s] + int(k)));
-          sol.nodes.push_back(r);
-        }
-    sol.reactions = reactions(system, l, seat, K * u - f, u);
-    return sol;
+    std::vector<Solution> out;
+    for (const auto &loads : cases)
+      {
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+        for (const auto &p : loads)
+          {
+            if (!p.force.allFinite() || !p.moment.allFinite())
+              throw InputError("load", "a non-finite force or moment", "finite values");
+            const int node = l.node(p.shaft, p.z, "load position");
+            f.segment<3>(6 * node) += p.force;
+            f.segment<3>(6 * node + 3) += p.moment;
+          }
+        Eigen::VectorXd ff(m);
+        for (int i = 0; i < m; ++i)
+          ff[i] = f[free[std::size_t(i)]];
+        const Eigen::VectorXd uf = llt.solve(ff);
+        Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+        for (int i = 0; i < m; ++i)
+          u[free[std::size_t(i)]] = uf[i];
+        if (!u.allFinite())
+          throw SolverError("shaft system: a non-finite displacement");
+        Solution sol;
+        for (std::size_t s = 0; s < system.shafts.size(); ++s)
+          for (std::size_t k = 0; k < l.z[s].size(); ++k)
+            {
+              NodeResult r;
+              r.shaft = int(s), r.z = l.z[s][k];
+              r.u     = u.segment<6>(6 * (l.first[s] + int(k)));
+              sol.nodes.push_back(r);
+            }
+        sol.reactions = reactions(system, l, seat, K * u - f, u);
+        out.push_back(std::move(sol));
+      }
+    return out;
   }
 } // namespace gearfem::shafts

@@ -140,6 +140,9 @@ namespace gearfem::shafts
   /// a bearing or load off its shaft, or a system that is not supported (a singular stiffness:
   /// a rigid-body motion left free, e.g. an unrestrained torsion).
   Solution solve(const System &system, const std::vector<PointLoad> &loads);
+  /// The same for several load cases on one factorisation (influence coefficients): the
+  /// nodes of every case's loads are nodes of all of them.
+  std::vector<Solution> solve_cases(const System &system, const std::vector<std::vector<PointLoad>> &cases);
 
   /// The 12x12 stiffness of one Timoshenko element of length L along z (node DoFs as Dof, node
   /// a then node b) [SI].

@@ -84,6 +84,18 @@ TEST(Helix, LeadGapShapesAndChecks)
   m.end_relief = 8e-6, m.end_relief_length = 5e-3;
   EXPECT_NEAR(helical::lead_gap(m, 0, b, a), 0, 1e-18);
   EXPECT_NEAR(helical::lead_gap(m, b / 2 - 2.5e-3, b, a), 4e-6, 1e-15);
+  // A point-by-point profile: linear between its points, held beyond them.
+  m = helical::LeadModification();
+  m.profile_z = {-0.01, 0.0, 0.015}, m.profile_gap = {2e-6, 0.0, 6e-6};
+  EXPECT_NEAR(helical::lead_gap(m, -0.005, b, a), 1e-6, 1e-18);
+  EXPECT_NEAR(helical::lead_gap(m, 0.01, b, a), 4e-6, 1e-18);
+  EXPECT_NEAR(helical::lead_gap(m, -b / 2, b, a), 2e-6, 1e-18);
+  EXPECT_NEAR(helical::lead_gap(m, b / 2, b, a), 6e-6, 1e-18);
+  EXPECT_NO_THROW(helical::check_profile(m, b));
+  m.profile_z = {0.0, -0.01, 0.015}; // not increasing
+  EXPECT_THROW(helical::check_profile(m, b), InputError);
+  m.profile_z = {-0.01, 0.0}; // a gap without a position
+  EXPECT_THROW(helical::check_profile(m, b), InputError);
   helical::HelixInput hx;
   hx.slices = 0;
   EXPECT_THROW(helical::check(hx, b), InputError);
@@ -228,6 +240,27 @@ TEST(SlicedPair, HandMirrorsTheFace)
       for (std::size_t i = 0; i < N; ++i)
         EXPECT_NEAR(l.slices[i].load_per_width, r.slices[N - 1 - i].load_per_width, 1e-6 * r.normal_force / 0.02);
     }
+}
+
+TEST(SlicedPair, LeadProfileIsAGapOffsetLikeTheParametricOnes)
+{
+  // A profile that samples the linear opening of a misalignment at the slice centres gives the
+  // misaligned pair's solution (the slices see the gap at their centres only).
+  auto &b = built();
+  const double f = 10e-6;
+  const auto o   = options(0, 7, -1, f / units::um);
+  const helical::SlicedPair tilted(b.cycle, b.in, o);
+  const helical::SlicedPair aligned(b.cycle, b.in, options(0, 7, -1));
+  helical::LeadModification profile;
+  const double bw = o.helix.face_width;
+  for (const double z : helical::slice_centres(bw, 7))
+    profile.profile_z.push_back(z), profile.profile_gap.push_back(helical::lead_gap(o.lead, z, bw, o.alpha_wt));
+  const double phi = b.cycle.positions[3].second;
+  const auto h1 = tilted.solve(phi, 300), h2 = aligned.solve(phi, 300, profile);
+  EXPECT_NEAR(h2.ste, h1.ste, 1e-12 * h1.ste);
+  EXPECT_NEAR(h2.k_h_beta, h1.k_h_beta, 1e-12);
+  for (std::size_t k = 0; k < h1.slices.size(); ++k)
+    EXPECT_NEAR(h2.slices[k].force, h1.slices[k].force, 1e-9 * h1.normal_force);
 }
 
 TEST(SlicedPair, UncoupledMisalignedSpurFollowsWinkler)
