@@ -5,7 +5,9 @@
 # (thesis_model.py); gearfem dynamics with those tables, at 600 rpm, and with gearfem's
 # Weber/Cornell table; the tooth inertia of the thesis' definition (--validate runs, both
 # weightings); J(theta) in the equations of motion (energy balance); gearfem rate for the
-# Weber/Cornell and ISO 6336-1 stiffness; check.py (PASS or FAIL). About 1 min.
+# Weber/Cornell and ISO 6336-1 stiffness; the thesis' compliance code replayed in numpy
+# (compliance_replica.py) and gearfem's FE mesh stiffness of the pair (fe_20_40.prm);
+# check.py (PASS or FAIL). About 1 min.
 # Usage: validation/seed004_dynamics/run.sh   (GEARFEM=path/to/gearfem to override)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
@@ -39,5 +41,9 @@ sed -e 's/set Plane model = plane strain/set Plane model = plane stress/' \
     -e 's/set Corner contact  = false/set Corner contact  = true/' "$here/rate_20_40.prm" > "$out/rate_plane_stress.prm"
 grep -q "plane stress" "$out/rate_plane_stress.prm"
 "$gearfem" rate "$out/rate_plane_stress.prm" --output-dir "$out/rate_plane_stress" > "$out/rate_plane_stress.log" 2>&1
+echo "== the thesis' compliance code (numpy): its stiffness fits, each lead switched alone"
+/usr/bin/python3 "$here/compliance_replica.py" "$out" | tee "$out/compliance_replica.log"
+echo "== gearfem solve: FE mesh stiffness of the 20/40 pair at 100 N m"
+"$gearfem" solve "$here/fe_20_40.prm" --output-dir "$out/fe" > "$out/fe.log" 2>&1
 /usr/bin/python3 "$here/plot.py" "$here/response.png" "$out"
 check --out "$out"
