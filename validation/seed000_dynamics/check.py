@@ -4,10 +4,12 @@
 Usage: check.py --out <results dir>
 Reads results/<case>.log and results/ricker/<case>.log (the four Table 1 cases as the thesis
 describes them), results/thesis_runs.csv (the same with the thesis' listing set-up),
+results/listing_replica.csv (the thesis' listing, replicated, over its ambiguous ingredients),
 results/grid.csv (period-doubling search), results/momentum_{constant,zones}.log,
 results/vasileiou.csv (Figs 27-28 pair), results/timing.csv and results/profile.log."""
 import argparse
 import csv
+import json
 import os
 import re
 import sys
@@ -86,11 +88,81 @@ def table1(c, out):
         c.true(f"Ricker law, {case}: {'contact loss' if want else 'no contact loss'}",
                loss is not None and (loss > 0) == want, f"fraction {loss:g}, period {period:g}" if loss is not None
                else None, "loss" if want else "no loss", "Gkimisis 2019 sec. 5.2, Fig. 30 / Fig. 23")
-    together = [cfg for cfg in CONFIGS if all(results[(case, *cfg)][2] for case in CASES)]
-    c.true("one configuration reproduces the four Table 1 outcomes together", bool(together),
-           ", ".join(f"{law}/{setup}: {sum(results[(case, law, setup)][2] for case in CASES)} of 4"
-                     for law, setup in CONFIGS), "4 of 4 in one configuration",
-           THESIS + " (one model, one set-up)")
+
+
+LISTING = {"ics": "coded", "dt": 1e-5, "ramp": 0.1, "damping": "epsilon", "case4_torque": 40.0}
+REPLICA = "listing_replica.py (the thesis' dynamic listing in numpy, its geometric model)"
+
+
+def replica(c, out):
+    """The thesis' own listing (listing_replica.py): which set-up gives which Table 1 outcome."""
+    rows = read_rows(os.path.join(out, "listing_replica.csv"))
+    if not rows:
+        c.true("listing replica ran", False, None, "results/listing_replica.csv", REPLICA)
+        return
+    for r in rows:
+        for k in ("dt", "ramp", "case4_torque", "loss", "period", "speed_rpm", "n0", "change1"):
+            r[k] = float(r[k])
+    setup = lambda r: tuple(r[k] for k in LISTING)  # noqa: E731
+    ok = lambda r: outcome(r["loss"], r["period"], *CASES[r["case"]][:2])  # noqa: E731
+    text = lambda r: f"loss {r['loss']:.3g}, period {r['period']:g}"  # noqa: E731
+    listing = {r["case"]: r for r in rows if setup(r) == tuple(LISTING.values())}
+    for case in ("case1_5Nm_600rpm", "case2_20Nm_1200rpm", "case4_40Nm_1200rpm_a+1mm"):
+        r = listing.get(case)
+        c.true(f"listing replica, the listing's set-up: {case}: {CASES[case][2]}", bool(r) and ok(r),
+               text(r) if r else None, "as the thesis", REPLICA + "; " + THESIS)
+    r = listing.get("case3_40Nm_1200rpm")
+    c.true("listing replica, the listing's set-up: case3_40Nm_1200rpm loses contact (the thesis' Fig. 25 shows none)",
+           bool(r) and r["loss"] > 0, text(r) if r else None, "loss > 0: the listing cannot give Fig. 25",
+           REPLICA)
+    coded3 = [r for r in rows if r["ics"] == "coded" and r["case"] == "case3_40Nm_1200rpm"]
+    c.true("listing replica: case 3 (40 N m) loses contact in every set-up with the listing's initial gear "
+           "speed (step, ramp, damping scanned)", bool(coded3) and not [r for r in coded3 if ok(r)],
+           f"{sum(ok(r) for r in coded3)} of {len(coded3)} as Fig. 25; loss " + ", ".join(f"{r['loss']:.2f}" for r in coded3),
+           "0: Fig. 25 needs the kinematic initial speed", REPLICA)
+    kin4 = [r for r in rows if r["ics"] == "kinematic" and r["case"] == "case4_40Nm_1200rpm_a+1mm"]
+    c.true("listing replica: case 4 (a12 + 1 mm) keeps contact in every set-up with the kinematic initial "
+           "gear speed (step, ramp, damping, 40 or 20 N m scanned)", bool(kin4) and not [r for r in kin4 if ok(r)],
+           f"{sum(ok(r) for r in kin4)} of {len(kin4)} as Fig. 26; loss " + ", ".join(f"{r['loss']:.2g}" for r in kin4),
+           "0: Fig. 26 needs the listing's initial gear speed", REPLICA)
+    kin = [r for r in rows if r["ics"] == "kinematic" and not r["case"].startswith("case4")]
+    c.true("listing replica: cases 1-3 as Table 1 in every set-up with the kinematic initial gear speed",
+           bool(kin) and all(ok(r) for r in kin), f"{sum(ok(r) for r in kin)} of {len(kin)}", "all",
+           REPLICA + "; " + THESIS)
+    # A set-up: the four cases with one step, ramp, damping and initial gear speed; the case-4
+    # torque switch changes case 4 only (cases 1-3 are the same runs).
+    by_setup = {}
+    for r in rows:
+        if r["case"].startswith("case4"):
+            by_setup.setdefault(setup(r), {})[r["case"]] = r
+    for s_, cs in by_setup.items():
+        for r in rows:
+            if not r["case"].startswith("case4") and setup(r)[:4] == s_[:4]:
+                cs[r["case"]] = r
+    full = [s for s, cs in by_setup.items() if len(cs) == 4 and all(ok(r) for r in cs.values())]
+    best = max(sum(ok(r) for r in cs.values()) for cs in by_setup.values() if len(cs) == 4)
+    c.true("listing replica: no set-up gives the four Table 1 outcomes (the table mixes the initial gear speeds)",
+           not full and len(by_setup) == 32 and all(len(cs) == 4 for cs in by_setup.values()),
+           f"{len(full)} of {len(by_setup)} set-ups give all four (best {best} of 4)",
+           "0", REPLICA + " over step x ramp x damping x initial gear speed (x case-4 torque)")
+    r = listing.get("case2_20Nm_1200rpm")
+    c.rel("listing replica, the listing's set-up, case 2: pinion speed of the record (the thesis' Fig. 25: "
+          "'much larger than its initial value')", r["speed_rpm"] if r else None, thesis_speed_rpm(1200), 0.01,
+          "n0 (1 + r^4)/(1 + r^2) = 2.96 n0 (momentum, README)", " rpm")
+    info = os.path.join(out, "listing_replica.json")
+    geo = json.load(open(info)) if os.path.exists(info) else {}
+    g = geo.get("0", {})
+    c.within("listing replica geometry: contact ratio epsilon", g.get("epsilon"), 1.72, 1.73,
+             "Gkimisis 2019 Table 1 / sec. 5.1: 1.72")
+    ab = g.get("AB_deg", [None, None])
+    c.abs("listing replica geometry: start of AB in w1", ab[0], -9.2, 0.05, "Gkimisis 2019 Fig. 14: -9 deg "
+          "(SEEDS.md: -9.2)", " deg")
+    c.abs("listing replica geometry: end of AB in w1", ab[1], 10.2, 0.05, "Gkimisis 2019 Fig. 14: 10 deg "
+          "(SEEDS.md: 10.2)", " deg")
+
+
+def thesis_speed_rpm(n0, r=60 / 32):
+    return n0 * (1 + r ** 4) / (1 + r ** 2)
 
 
 def period_doubling(c, out):
@@ -210,6 +282,7 @@ def main():
     args = ap.parse_args()
     c = Checks("seed000_dynamics", args.out)
     table1(c, args.out)
+    replica(c, args.out)
     period_doubling(c, args.out)
     momentum(c, args.out)
     vasileiou(c, args.out)

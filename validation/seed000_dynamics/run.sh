@@ -3,7 +3,9 @@
 # the analytical (Weber/Cornell) torque table and with the thesis' semi-analytical law
 # (Law = Ricker, the same files with the law swapped), and the contact-state plot (plot.py);
 # (2) the same cases with the set-up of the thesis' listing (thesis_runs.py) and the settled
-# speed of its initial conditions checked by an independent integration (momentum.py);
+# speed of its initial conditions checked by an independent integration (momentum.py); the
+# thesis' own dynamic listing replicated in numpy (listing_replica.py, listing_geometry.py) over
+# its open ingredients (initial gear speed, step, ramp, damping, case-4 torque);
 # (3) the period-doubling search around case 2 (grid.py, period_grid.png); (4) the Vasileiou
 # pair of Figs 27-28 with phase portraits (vasileiou.py, vasileiou_portraits.png); (5) the
 # speed-versus-error table of the laws with an FE-exact table of the pair (gearfem condense
@@ -36,6 +38,8 @@ done
 "$gearfem" profile "$root/inputs/seed000_32_60.prm" --output-dir "$out/profile" > "$out/profile.log" 2>&1
 echo "== the thesis' listing set-up (8 runs)"
 /usr/bin/python3 "$here/thesis_runs.py" "$gearfem" "$out" $(for c in "${cases[@]}"; do echo "$here/$c.prm"; done)
+echo "== the thesis' dynamic listing, replicated (numpy, geometric model; 80 runs over its open ingredients)"
+/usr/bin/python3 "$here/listing_replica.py" "$out" | tee "$out/listing_replica.log"
 echo "== settled speed from the thesis' initial conditions (independent 2-DOF RK4)"
 for k in constant zones; do
   /usr/bin/python3 "$here/momentum.py" 1200 20 $k | tee "$out/momentum_$k.log"
