@@ -5,6 +5,7 @@
 #include "base/units.h"
 #include "commands/command.h"
 #include "helical/run.h"
+#include "system_deflection/run.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -14,12 +15,17 @@ namespace gearfem::commands
 {
   namespace helical_job
   {
-    void declare(dealii::ParameterHandler &prm) { helical::declare_request(prm); }
+    void declare(dealii::ParameterHandler &prm)
+    {
+      helical::declare_request(prm);
+      system_deflection::declare_system_parameters(prm);
+    }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
       std::ostream &out                 = *ctx.out;
       helical::Request req              = helical::parse_request(prm);
+      const system_deflection::SystemInput sys = system_deflection::parse_system_parameters(prm);
       const solve::GearContactInput &in = req.section;
       const helical::SlicingOptions &o  = req.slicing;
       helical::RunOptions &ro           = req.run;
@@ -42,14 +48,33 @@ namespace gearfem::commands
         return;
       if (ctx.condensed.empty())
         ro.write_cycle = ctx.output_dir / condensed::file_name;
-      const helical::HelicalRun r = helical::run_helical(in, o, ro);
-      helical::write_helical(r, ctx.output_dir, ctx.input_file.filename().string());
+      system_deflection::CoupledRun coupled;
+      if (sys.coupled)
+        {
+          coupled = system_deflection::run_coupled(in, o, ro, sys);
+          system_deflection::write_coupled(coupled, ctx.output_dir, ctx.input_file.filename().string());
+        }
+      else
+        {
+          coupled.helical = helical::run_helical(in, o, ro);
+          helical::write_helical(coupled.helical, ctx.output_dir, ctx.input_file.filename().string());
+        }
+      const helical::HelicalRun &r = coupled.helical;
       out << std::setprecision(5);
       for (const auto &t : r.summary)
         out << "T " << t.torque << " N m: STE mean " << t.ste_mean / units::um << " um, p-p " << t.ste_pp / units::um
             << " um; mesh stiffness " << t.k_mean * units::um << " N/um (c_gamma " << t.c_gamma_iso()
             << " N/(mm um)); K_Hbeta " << t.k_h_beta << "; p_max " << t.p_max / 1e6 << " MPa; root stress "
             << t.root_stress_pinion / 1e6 << " / " << t.root_stress_gear / 1e6 << " MPa\n";
+      if (sys.coupled)
+        {
+          int it = 0;
+          double res = 0;
+          for (const auto &c : coupled.coupled)
+            it = std::max(it, c.iterations), res = std::max(res, c.residual);
+          out << "on the shafts: up to " << it << " iterations per position, residual <= " << res / units::um
+              << " um; wrote coupling.csv, misalignment.csv, shafts.csv, bearings.csv, system.json\n";
+        }
       out << "build " << r.build_seconds << " s, sweep " << r.sweep_seconds << " s (" << r.results.size()
           << " positions, " << r.sweep_seconds / std::max<std::size_t>(1, r.results.size()) * 1e3
           << " ms each); wrote helical.csv, slices.csv, lines.csv, helical.json\n";

@@ -148,7 +148,7 @@ namespace gearfem::helical
         const double phi = grid[i % grid.size()].second;
         try
           {
-            run.results.push_back(sliced.solve(phi, T));
+            run.results.push_back(ro.position ? ro.position(sliced, phi, T) : sliced.solve(phi, T));
             const auto &r = run.results.back();
             std::ostringstream d;
             d << "T " << T << " N m, STE " << std::setprecision(4) << r.ste / units::um << " um, K_Hbeta "

@@ -6,6 +6,7 @@
 #include "helical/slicing.h"
 
 #include <filesystem>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -54,6 +55,10 @@ namespace gearfem::helical
     double build_torque = 0, torque_lo = 0, torque_hi = 0, scene_ratio = -1;
     std::filesystem::path cycle_file; ///< read this condensed cycle instead of building one
     std::filesystem::path write_cycle; ///< write the built cycle here (empty: not written)
+    /// How one position is solved on the sliced pair; empty: SlicedPair::solve with the
+    /// options' lead. The shaft coupling (system_deflection/run.h) solves each position on the
+    /// pair's shafts through it.
+    std::function<HelicalResult(const SlicedPair &, double phi1, double torque)> position;
   };
 
   /// Build (or read) the cycle of `section` (positions set by slicing_options, which gave

@@ -1,0 +1,171 @@
+#include "system_deflection/run.h"
+
+#include "base/atomic_file.h"
+#include "base/errors.h"
+#include "base/progress.h"
+#include "base/units.h"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <memory>
+
+namespace gearfem::system_deflection
+{
+  void complete(SystemInput &sys, const solve::GearContactInput &section, const helical::SlicingOptions &o)
+  {
+    const auto &pair = *section.pair;
+    if (sys.system.shafts.size() != 2)
+      throw InputError("System shafts", std::to_string(sys.system.shafts.size()), "a pinion shaft and a gear shaft");
+    sys.system.shafts[0].x = sys.system.shafts[0].y = 0;
+    sys.system.shafts[1].x = pair.center_distance(), sys.system.shafts[1].y = 0;
+    auto &m          = sys.mesh;
+    m.pinion_shaft   = 0, m.gear_shaft = 1;
+    m.face_width     = o.helix.face_width;
+    m.alpha_wt       = o.alpha_wt;
+    m.pitch_radius_1 = pair.working_pitch_radius(1);
+    // The axial force's sign by the hand (roll_per_length carries it) and the drive sense.
+    m.beta_b = (o.helix.roll_per_length >= 0 ? 1.0 : -1.0) * m.drive_sense * o.helix.beta_b;
+    m.validate(sys.system);
+  }
+
+  CoupledRun run_coupled(const solve::GearContactInput &section, const helical::SlicingOptions &o,
+                         helical::RunOptions ro, SystemInput sys)
+  {
+    complete(sys, section, o);
+    CoupledRun run;
+    run.system = sys.system, run.mesh = sys.mesh;
+    std::unique_ptr<CoupledPair> pair;
+    helical::LeadModification lead = o.lead;
+    std::vector<double> warm; // the previous position's mismatch
+    double last_torque = -1;
+    ro.position = [&](const helical::SlicedPair &sliced, double phi1, double torque) {
+      if (!pair)
+        {
+          pair = std::make_unique<CoupledPair>(sliced, sys.system, sys.mesh, sys.options);
+          if (sys.correction_torque > 0)
+            {
+              const auto t0  = std::chrono::steady_clock::now();
+              const auto all = o.grid.positions();
+              std::vector<double> phis;
+              const int n = std::max(1, std::min(sys.correction_positions, int(all.size())));
+              for (int k = 0; k < n; ++k)
+                phis.push_back(all[std::size_t(k * int(all.size()) / n)].second);
+              if (ro.out)
+                *ro.out << "lead correction at " << sys.correction_torque << " N m over " << n << " positions\n";
+              run.design    = design_correction(*pair, phis, sys.correction_torque, o.lead);
+              run.corrected = true;
+              lead          = pair->corrected(o.lead, run.design.correction);
+              run.design_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+              if (ro.out)
+                *ro.out << std::setprecision(4) << "lead correction: slope " << run.design.correction.slope / units::um
+                        << " um, crowning " << run.design.correction.crowning / units::um << " um ("
+                        << run.design.iterations << " corrections, " << run.design_seconds << " s)\n";
+            }
+        }
+      if (torque != last_torque)
+        warm.clear(), last_torque = torque;
+      run.coupled.push_back(pair->solve(phi1, torque, lead, warm));
+      warm = run.coupled.back().mismatch;
+      return run.coupled.back().helical;
+    };
+    run.helical = helical::run_helical(section, o, ro);
+    // Per torque: the shafts under the cycle's mean slice forces (the shafts are linear).
+    if (pair)
+      for (const double T : run.helical.torques)
+        {
+          CoupledResult mean;
+          int n = 0;
+          for (const auto &c : run.coupled)
+            if (c.helical.torque == T)
+              {
+                if (n++ == 0)
+                  mean = c;
+                else
+                  for (std::size_t k = 0; k < c.helical.slices.size(); ++k)
+                    mean.helical.slices[k].force += c.helical.slices[k].force;
+              }
+          if (n == 0)
+            continue;
+          for (auto &s : mean.helical.slices)
+            s.force /= n;
+          run.shafts.push_back({T, pair->shafts_under(mean)});
+        }
+    return run;
+  }
+
+  namespace
+  {
+    template <typename F>
+    void write(const std::filesystem::path &file, F &&body)
+    {
+      AtomicOutputFile f(file);
+      f.stream() << std::setprecision(10);
+      body(f.stream());
+      f.commit();
+    }
+  } // namespace
+
+  void write_coupled(const CoupledRun &run, const std::filesystem::path &dir, const std::string &input_name)
+  {
+    helical::write_helical(run.helical, dir, input_name);
+    const auto grid = std::size_t(run.helical.options.grid.size);
+    write(dir / "coupling.csv", [&](std::ostream &s) {
+      s << "position,torque_Nm,k_h_beta,iterations,residual_um,mean_approach_um,mismatch_max_um\n";
+      for (std::size_t i = 0; i < run.coupled.size(); ++i)
+        {
+          const auto &c = run.coupled[i];
+          double g = 0;
+          for (const double v : c.mismatch)
+            g = std::max(g, v);
+          s << i % grid << ',' << c.helical.torque << ',' << c.helical.k_h_beta << ',' << c.iterations << ','
+            << c.residual / units::um << ',' << c.mean_approach / units::um << ',' << g / units::um << '\n';
+        }
+    });
+    write(dir / "misalignment.csv", [&](std::ostream &s) {
+      s << "position,torque_Nm,slice,z_mm,force_N,approach_um,mismatch_um\n";
+      for (std::size_t i = 0; i < run.coupled.size(); ++i)
+        {
+          const auto &c = run.coupled[i];
+          for (std::size_t k = 0; k < c.z.size(); ++k)
+            s << i % grid << ',' << c.helical.torque << ',' << k << ',' << c.z[k] / units::mm << ','
+              << c.helical.slices[k].force << ',' << c.approach[k] / units::um << ',' << c.mismatch[k] / units::um
+              << '\n';
+        }
+    });
+    write(dir / "shafts.csv", [&](std::ostream &s) {
+      s << "torque_Nm,shaft,z_mm,u_x_um,u_y_um,u_z_um,theta_x_mrad,theta_y_mrad,theta_z_mrad\n";
+      for (const auto &t : run.shafts)
+        for (const auto &n : t.solution.nodes)
+          s << t.torque << ',' << n.shaft << ',' << n.z / units::mm << ',' << n.u[0] / units::um << ','
+            << n.u[1] / units::um << ',' << n.u[2] / units::um << ',' << n.u[3] * 1e3 << ',' << n.u[4] * 1e3 << ','
+            << n.u[5] * 1e3 << '\n';
+    });
+    write(dir / "bearings.csv", [&](std::ostream &s) {
+      s << "torque_Nm,bearing,shaft,z_mm,F_x_N,F_y_N,F_z_N,M_x_Nm,M_y_Nm,M_z_Nm\n";
+      for (const auto &t : run.shafts)
+        for (std::size_t i = 0; i < t.solution.reactions.size(); ++i)
+          {
+            const auto &r = t.solution.reactions[i];
+            const auto &b = run.system.bearings[i];
+            s << t.torque << ',' << r.name << ',' << b.shaft << ',' << b.z / units::mm << ',' << r.force.x() << ','
+              << r.force.y() << ',' << r.force.z() << ',' << r.moment.x() << ',' << r.moment.y() << ','
+              << r.moment.z() << '\n';
+          }
+    });
+    write(dir / "system.json", [&](std::ostream &s) {
+      const auto &m = run.mesh;
+      s << "{\n  \"input\": \"" << input_name << "\",\n  \"centre_distance_mm\": " << run.system.shafts[1].x / units::mm
+        << ",\n  \"pinion_face_start_mm\": " << m.pinion_face_start / units::mm
+        << ", \"gear_face_start_mm\": " << m.gear_face_start / units::mm
+        << ", \"pitch_radius_1_mm\": " << m.pitch_radius_1 / units::mm << ", \"drive_sense\": " << m.drive_sense
+        << ",\n  \"corrected\": " << (run.corrected ? "true" : "false");
+      if (run.corrected)
+        s << ", \"correction_slope_um\": " << run.design.correction.slope / units::um
+          << ", \"correction_crowning_um\": " << run.design.correction.crowning / units::um
+          << ", \"correction_iterations\": " << run.design.iterations
+          << ", \"correction_seconds\": " << run.design_seconds;
+      s << ",\n  \"sweep_seconds\": " << run.helical.sweep_seconds << "\n}\n";
+    });
+  }
+} // namespace gearfem::system_deflection

@@ -1,0 +1,69 @@
+#pragma once
+// `gearfem helical` on the pair's shafts (`System/Coupling = shafts`, docs/system-deflection.md):
+// the helical sweep with every position solved on the shafts (coupled.h), the lead correction
+// designed at a torque when asked, and the tables of the shafts: the mismatch along the face per
+// position, the coupling's iterations and residual, and per torque the shafts' deflection lines
+// and bearing reactions under the cycle's mean slice forces.
+#include "helical/run.h"
+#include "system_deflection/coupled.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace gearfem::system_deflection
+{
+  /// The `System` section: shaft 0 carries the pinion (gear 1), shaft 1 the gear (gear 2), whose
+  /// axis is placed at the centre distance along +x.
+  struct SystemInput
+  {
+    bool coupled = false; ///< false: the helical run is not coupled (the section is ignored)
+    shafts::System system;
+    /// Face starts on the shafts and the drive sense; the face width, pressure angle, helix and
+    /// pitch radius are the pair's (completed by run_coupled).
+    shafts::MeshLayout mesh;
+    CoupledOptions options;
+    double correction_torque = 0; ///< > 0: design the lead correction at this torque [N m]
+    int correction_positions = 8; ///< positions of the cycle the correction is designed over
+  };
+
+  void declare_system_parameters(dealii::ParameterHandler &prm);
+  /// InputError naming the `System` entry of the first bad value (a segment, a bearing, a face
+  /// off its shaft).
+  SystemInput parse_system_parameters(dealii::ParameterHandler &prm);
+
+  struct TorqueShafts
+  {
+    double torque = 0;
+    shafts::Solution solution; ///< under the cycle's mean slice forces
+  };
+
+  struct CoupledRun
+  {
+    helical::HelicalRun helical;
+    std::vector<CoupledResult> coupled; ///< parallel to helical.results
+    bool corrected = false;
+    DesignedCorrection design;          ///< when corrected
+    double design_seconds = 0;
+    std::vector<TorqueShafts> shafts;   ///< per torque
+    shafts::System system;              ///< as solved (the gear axis placed)
+    shafts::MeshLayout mesh;            ///< as solved
+  };
+
+  /// The pair's mesh layout on `sys` completed from the slicing (face width, alpha_wt, helix,
+  /// pitch radius) and the gear shaft placed at the centre distance.
+  void complete(SystemInput &sys, const solve::GearContactInput &section, const helical::SlicingOptions &o);
+
+  /// The helical run of `section` with every position on the shafts of `sys` (completed here).
+  CoupledRun run_coupled(const solve::GearContactInput &section, const helical::SlicingOptions &o,
+                         helical::RunOptions ro, SystemInput sys);
+
+  /// The helical tables (helical::write_helical) and coupling.csv, misalignment.csv,
+  /// shafts.csv, bearings.csv and system.json, each written atomically into `dir`.
+  void write_coupled(const CoupledRun &run, const std::filesystem::path &dir, const std::string &input_name);
+} // namespace gearfem::system_deflection
