@@ -219,13 +219,18 @@ namespace gearfem::helical
   void SlicedPair::prepare(Sub &u, double load, const LeadModification &lead) const
   {
     const double b = o_.helix.face_width;
-    u.p = &cycle_.at(u.g, std::clamp(load, cycle_.torque_lo, cycle_.torque_hi));
-    u.offset =
-      resolver_.offsets(*u.p).array() + lead_gap(lead, slice_centres(b, o_.slices)[std::size_t(u.slice)], b, o_.alpha_wt);
+    u.p      = &cycle_.at(u.g, std::clamp(load, cycle_.torque_lo, cycle_.torque_hi));
+    u.offset = offsets(u, lead);
     u.keep.clear();
     for (std::size_t c = 0; c < u.p->size(); ++c)
       if (u.p->cand[c].point.force > 0 || u.p->cand[c].point.gap < initial_gap)
         u.keep.push_back(int(c));
+  }
+
+  Eigen::VectorXd SlicedPair::offsets(const Sub &u, const LeadModification &lead) const
+  {
+    const double b = o_.helix.face_width;
+    return resolver_.offsets(*u.p).array() + lead_gap(lead, slice_centres(b, o_.slices)[std::size_t(u.slice)], b, o_.alpha_wt);
   }
 
   double SlicedPair::assemble(System &s, std::vector<Sub> &sub, double torque) const
@@ -370,14 +375,35 @@ namespace gearfem::helical
 
   HelicalResult SlicedPair::solve(double phi1, double torque, const LeadModification &lead) const
   {
+    return evaluate(solve_forces(phi1, torque, lead));
+  }
+
+  SlicedPair::Solved SlicedPair::solve_forces(double phi1, double torque, const LeadModification &lead,
+                                              const Solved *warm) const
+  {
     check_profile(lead, o_.helix.face_width);
     require_greater("Solve/Torques", torque, 0.0, "N m");
     (void)cycle_.at(0, torque); // SolverError naming the cycle's torque range outside it
-    const auto t0 = Clock::now();
-    std::vector<Sub> sub = subs(phi1);
-    for (auto &u : sub)
-      prepare(u, torque, lead);
-    System s;
+    auto st    = std::make_shared<State>();
+    st->start  = Clock::now();
+    st->phi1   = phi1, st->torque = torque, st->lead = lead;
+    auto &sub  = st->sub;
+    System &s  = st->s;
+    const State *w = warm && warm->state && warm->state->phi1 == phi1 && warm->state->torque == torque
+                       ? warm->state.get()
+                       : nullptr;
+    if (w)
+      {
+        sub = w->sub;
+        for (auto &u : sub)
+          u.offset = offsets(u, lead);
+      }
+    else
+      {
+        sub = subs(phi1);
+        for (auto &u : sub)
+          prepare(u, torque, lead);
+      }
     int iterations = 0;
     try
       {
@@ -385,7 +411,9 @@ namespace gearfem::helical
           {
             if (pass == 12)
               throw SolverError("the scenes and candidate sets of the slices did not settle in 12 passes");
-            const double q = assemble(s, sub, torque);
+            double q = assemble(s, sub, torque);
+            if (pass == 0 && w && w->s.m == s.m)
+              s.lambda0 = w->s.solution.lambda, q = w->s.q;
             iterations += rotate(s, sub, torque, q);
             s.iterations = iterations;
             if ((pass < 6 && rescene(sub, s, lead)) || grow(sub, s))
@@ -399,9 +427,21 @@ namespace gearfem::helical
         throw SolverError("helical position phi1 = " + to_string_g(phi1 / units::deg) + " deg, torque " +
                           to_string_g(torque) + " N m: " + e.what());
       }
-    HelicalResult h = evaluate(phi1, torque, sub, s, lead);
-    h.iterations    = iterations;
-    h.seconds       = since(t0);
+    st->iterations = iterations;
+    Solved out;
+    out.force.assign(std::size_t(o_.slices), 0.0);
+    for (const auto &u : sub)
+      out.force[std::size_t(u.slice)] += sub_torque(u, s) / rb1_;
+    out.state = std::move(st);
+    return out;
+  }
+
+  HelicalResult SlicedPair::evaluate(const Solved &solved) const
+  {
+    const State &st = *solved.state;
+    HelicalResult h = evaluate(st.phi1, st.torque, st.sub, st.s, st.lead);
+    h.iterations    = st.iterations;
+    h.seconds       = since(st.start);
     return h;
   }
 } // namespace gearfem::helical

@@ -121,11 +121,31 @@ namespace gearfem::helical
     /// The same with the lead modification `lead` in place of the options' (the shaft coupling
     /// iterates on it without rebuilding the pair).
     HelicalResult solve(double phi1, double torque, const LeadModification &lead) const;
+
+  private:
+    struct State;
+
+  public:
+    /// A position solved but not yet post-processed: the slices' forces, and the state that
+    /// evaluate() turns into the full result. solve() is evaluate(solve_forces()); the shaft
+    /// coupling iterates on the forces and post-processes its converged position only.
+    struct Solved
+    {
+      std::vector<double> force; ///< transverse normal force of each slice [N]
+      std::shared_ptr<const State> state;
+    };
+    /// `warm`: a solution of the same position and torque under a nearby lead (the coupling's
+    /// previous iterate), whose scenes, candidate sets and forces start this one.
+    Solved solve_forces(double phi1, double torque, const LeadModification &lead, const Solved *warm = nullptr) const;
+    /// The full result (pressures, root stresses, contact lines) of a solved position.
+    HelicalResult evaluate(const Solved &solved) const;
     const SlicingOptions &options() const { return o_; }
 
   private:
     struct Sub;
     struct System;
+    /// The contact torque a sub-slice carries in the coupled problem's solution [N m].
+    double sub_torque(const Sub &u, const System &s) const;
     std::vector<Sub> subs(double phi1) const;
     /// The stored section's stiffness at the level of the given tooth pairs (stored labels):
     /// P W^-1 P^T over their stored candidates [N m/rad] (cached).
@@ -139,6 +159,8 @@ namespace gearfem::helical
     // problem changed); the coverage of the contact by the stored candidates.
     long pair_key(int t1, int t2, long wrap) const;
     void prepare(Sub &u, double load, const LeadModification &lead) const;
+    /// Relief and lead gap offsets of a sub-slice's stored candidates [m].
+    Eigen::VectorXd offsets(const Sub &u, const LeadModification &lead) const;
     double assemble(System &s, std::vector<Sub> &sub, double torque) const;
     int rotate(System &s, const std::vector<Sub> &sub, double torque, double q) const;
     bool rescene(std::vector<Sub> &sub, const System &s, const LeadModification &lead) const;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -58,6 +59,17 @@ namespace gearfem::helical
     int iterations = 0;
   };
 
+
+  /// A solved position (SlicedPair::Solved) before evaluate().
+  struct SlicedPair::State
+  {
+    double phi1 = 0, torque = 0;
+    std::vector<Sub> sub;
+    System s;
+    LeadModification lead;
+    int iterations = 0;
+    std::chrono::steady_clock::time_point start;
+  };
 
   /// The coupled operator W = blockdiag(B_j) + U dC U^T (U(i, at_i) = a_i, the build arm) for
   /// contact::solve_ncp_spd: each active system is solved through the Cholesky factors of the

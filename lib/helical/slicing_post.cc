@@ -66,6 +66,14 @@ namespace gearfem::helical
       }
   }
 
+  double SlicedPair::sub_torque(const Sub &u, const System &s) const
+  {
+    double T = 0;
+    for (int r = 0; r < int(u.keep.size()); ++r)
+      T -= s.arm[u.first + r] * s.solution.lambda[u.first + r];
+    return T;
+  }
+
   HelicalResult SlicedPair::evaluate(double phi1, double torque, const std::vector<Sub> &sub, const System &s,
                                      const LeadModification &lead) const
   {
@@ -101,9 +109,7 @@ namespace gearfem::helical
         const Sub &u  = sub[j];
         const auto &p = *u.p;
         const int n   = int(u.keep.size());
-        double T      = 0;
-        for (int r = 0; r < n; ++r)
-          T -= s.arm[u.first + r] * lam[u.first + r];
+        const double T = sub_torque(u, s);
         SliceResult &sr = h.slices[std::size_t(u.slice)];
         sr.force += T / rb1_;
         if (!(T > 0))

@@ -102,12 +102,13 @@ namespace gearfem::system_deflection
     r.z = z_;
     Eigen::VectorXd prev_step;
     double omega = 1;
+    helical::SlicedPair::Solved solved;
     for (int it = 1;; ++it)
       {
-        r.helical = pair_.solve(phi1, torque, with_profile(lead, z_, std::vector<double>(g.data(), g.data() + N), b));
-        Eigen::VectorXd F(N);
-        for (int k = 0; k < N; ++k)
-          F[k] = r.helical.slices[std::size_t(k)].force;
+        // The slices' forces only: the post-processing is for the converged mismatch.
+        solved = pair_.solve_forces(phi1, torque, with_profile(lead, z_, std::vector<double>(g.data(), g.data() + N), b),
+                                    it > 1 ? &solved : nullptr);
+        const Eigen::VectorXd F = Eigen::Map<const Eigen::VectorXd>(solved.force.data(), N);
         const Eigen::VectorXd delta = A_ * F;
         const Eigen::VectorXd g_new = Eigen::VectorXd::Constant(N, delta.maxCoeff()) - delta;
         r.residual   = max_abs_diff(g_new, g);
@@ -116,6 +117,7 @@ namespace gearfem::system_deflection
         r.mean_approach = delta.mean();
         if (r.residual <= options_.tolerance)
           {
+            r.helical = pair_.evaluate(solved);
             r.mismatch.assign(g.data(), g.data() + N);
             return r;
           }

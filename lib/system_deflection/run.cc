@@ -63,8 +63,14 @@ namespace gearfem::system_deflection
                         << run.design.iterations << " corrections, " << run.design_seconds << " s)\n";
             }
         }
+      // The shafts are linear and the mismatch follows the load: a new torque starts from the
+      // last one's mismatch scaled to it.
       if (torque != last_torque)
-        warm.clear(), last_torque = torque;
+        {
+          for (auto &g : warm)
+            g *= torque / last_torque;
+          last_torque = torque;
+        }
       run.coupled.push_back(pair->solve(phi1, torque, lead, warm));
       warm = run.coupled.back().mismatch;
       return run.coupled.back().helical;
@@ -159,6 +165,8 @@ namespace gearfem::system_deflection
         << ",\n  \"pinion_face_start_mm\": " << m.pinion_face_start / units::mm
         << ", \"gear_face_start_mm\": " << m.gear_face_start / units::mm
         << ", \"pitch_radius_1_mm\": " << m.pitch_radius_1 / units::mm << ", \"drive_sense\": " << m.drive_sense
+        << ",\n  \"face_width_mm\": " << m.face_width / units::mm << ", \"alpha_wt_deg\": " << m.alpha_wt / units::deg
+        << ", \"beta_b_deg\": " << m.beta_b / units::deg
         << ",\n  \"corrected\": " << (run.corrected ? "true" : "false");
       if (run.corrected)
         s << ", \"correction_slope_um\": " << run.design.correction.slope / units::um

@@ -263,6 +263,43 @@ TEST(SlicedPair, LeadProfileIsAGapOffsetLikeTheParametricOnes)
     EXPECT_NEAR(h2.slices[k].force, h1.slices[k].force, 1e-9 * h1.normal_force);
 }
 
+TEST(SlicedPair, ForcesFirstThenEvaluateIsTheSolveAndAWarmStartLandsOnTheSameSolution)
+{
+  // solve() is evaluate(solve_forces()); a solve started from another lead's solution (the shaft
+  // coupling's previous iterate) ends at the cold solve's answer: the complementarity problem's
+  // solution is unique, only its start differs.
+  auto &b = built();
+  const auto o = options(15, 9, -1);
+  const helical::SlicedPair pair(b.cycle, b.in, o);
+  const double phi = b.cycle.positions[4].second;
+  helical::LeadModification tilt, tilt2;
+  const double bw = o.helix.face_width;
+  for (const double z : helical::slice_centres(bw, 9))
+    {
+      tilt.profile_z.push_back(z), tilt.profile_gap.push_back(8e-6 * (z / bw + 0.5));
+      tilt2.profile_z.push_back(z), tilt2.profile_gap.push_back(9e-6 * (z / bw + 0.5));
+    }
+  const auto full  = pair.solve(phi, 300, tilt2);
+  const auto cold  = pair.solve_forces(phi, 300, tilt2);
+  const auto first = pair.solve_forces(phi, 300, tilt);
+  const auto warm  = pair.solve_forces(phi, 300, tilt2, &first);
+  const auto ev    = pair.evaluate(warm);
+  ASSERT_EQ(cold.force.size(), full.slices.size());
+  double total = 0;
+  for (std::size_t k = 0; k < full.slices.size(); ++k)
+    {
+      EXPECT_NEAR(cold.force[k], full.slices[k].force, 1e-12 * full.normal_force);
+      EXPECT_NEAR(warm.force[k], cold.force[k], 1e-9 * full.normal_force);
+      EXPECT_NEAR(ev.slices[k].force, warm.force[k], 1e-12 * full.normal_force);
+      total += warm.force[k];
+    }
+  EXPECT_NEAR(total, full.normal_force, 1e-9 * full.normal_force); // equilibrium: T1 / r_b1
+  EXPECT_NEAR(ev.ste, full.ste, 1e-9 * full.ste);
+  EXPECT_NEAR(ev.k_h_beta, full.k_h_beta, 1e-9);
+  EXPECT_NEAR(ev.p_max, full.p_max, 1e-8 * full.p_max);
+  EXPECT_NEAR(ev.root_stress_pinion, full.root_stress_pinion, 1e-8 * full.root_stress_pinion);
+}
+
 TEST(SlicedPair, UncoupledMisalignedSpurFollowsWinkler)
 {
   auto &b = built();
