@@ -11,6 +11,7 @@ namespace gearfem::commands
   Command solve_command();
   Command condense_command();
   Command helical_command();
+  Command system_command();
   Command calibrate_command();
   Command batch_command();
   Command gearbox_command();
@@ -29,6 +30,7 @@ namespace gearfem::commands
       solve_command(),
       condense_command(),
       helical_command(),
+      system_command(),
       calibrate_command(),
       batch_command(),
       optimise_command(),

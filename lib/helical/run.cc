@@ -97,6 +97,41 @@ namespace gearfem::helical
     }
   } // namespace
 
+  condensed::CondensedCycle section_cycle(const solve::GearContactInput &in, const std::vector<double> &torques,
+                                          const RunOptions &ro, HelicalRun &run)
+  {
+    condensed::CondensedCycle cycle;
+    if (!ro.cycle_file.empty())
+      {
+        cycle = condensed::read_cycle(ro.cycle_file);
+        for (const double T : torques)
+          if (T < cycle.torque_lo * (1 - 1e-12) || T > cycle.torque_hi * (1 + 1e-12))
+            throw InputError("Solve/Torques", to_string_g(T) + " N m",
+                             to_string_g(cycle.torque_lo) + " to " + to_string_g(cycle.torque_hi) +
+                               " N m (the torque range of the condensed cycle " + ro.cycle_file.string() + ")",
+                             "build a cycle for this torque (without --condensed, or with Condense/Torque range)");
+        return cycle;
+      }
+    const auto t0   = Clock::now();
+    condensed::CycleRange range = condensed::cycle_range(torques, condensed::CycleUse::slices, ro.build_torque);
+    if (ro.torque_lo > 0)
+      range.lo = ro.torque_lo;
+    if (ro.torque_hi > 0)
+      range.hi = ro.torque_hi;
+    auto model = in.model();
+    if (ro.out)
+      *ro.out << "transverse section: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3)
+              << model->setup_seconds() << " s; condensing " << in.positions().size() << " sections for torques "
+              << range.lo << " to " << range.hi << " N m\n";
+    cycle = condensed::cycle_for(*model, in, range,
+                                 {condensed::scene_ratio(condensed::CycleUse::slices, ro.scene_ratio), ro.out});
+    run.setup_seconds = model->setup_seconds();
+    run.build_seconds = since(t0);
+    if (!ro.write_cycle.empty())
+      condensed::write_cycle(cycle, ro.write_cycle);
+    return cycle;
+  }
+
   HelicalRun run_helical(const solve::GearContactInput &in, const SlicingOptions &o, const RunOptions &ro)
   {
     HelicalRun run;
@@ -106,37 +141,7 @@ namespace gearfem::helical
     const auto &pair = *in.pair;
     run.eps_alpha    = pair.contact_ratio();
     run.eps_gamma    = run.eps_alpha + run.helix.overlap_ratio;
-    condensed::CondensedCycle cycle;
-    if (!ro.cycle_file.empty())
-      {
-        cycle = condensed::read_cycle(ro.cycle_file);
-        for (const double T : run.torques)
-          if (T < cycle.torque_lo * (1 - 1e-12) || T > cycle.torque_hi * (1 + 1e-12))
-            throw InputError("Solve/Torques", to_string_g(T) + " N m",
-                             to_string_g(cycle.torque_lo) + " to " + to_string_g(cycle.torque_hi) +
-                               " N m (the torque range of the condensed cycle " + ro.cycle_file.string() + ")",
-                             "build a cycle for this torque (without --condensed, or with Condense/Torque range)");
-      }
-    else
-      {
-        const auto t0   = Clock::now();
-        condensed::CycleRange range = condensed::cycle_range(run.torques, condensed::CycleUse::slices, ro.build_torque);
-        if (ro.torque_lo > 0)
-          range.lo = ro.torque_lo;
-        if (ro.torque_hi > 0)
-          range.hi = ro.torque_hi;
-        auto model      = in.model();
-        if (ro.out)
-          *ro.out << "transverse section: " << model->n_dofs() << " DoFs, set-up " << std::setprecision(3)
-                  << model->setup_seconds() << " s; condensing " << in.positions().size()
-                  << " sections for torques " << range.lo << " to " << range.hi << " N m\n";
-        cycle = condensed::cycle_for(*model, in, range,
-                                     {condensed::scene_ratio(condensed::CycleUse::slices, ro.scene_ratio), ro.out});
-        run.setup_seconds = model->setup_seconds();
-        run.build_seconds = since(t0);
-        if (!ro.write_cycle.empty())
-          condensed::write_cycle(cycle, ro.write_cycle);
-      }
+    const condensed::CondensedCycle cycle = section_cycle(in, run.torques, ro, run);
     const SlicedPair sliced(cycle, in, run.options);
     const auto grid      = run.options.grid.positions();
     const std::size_t total = grid.size() * run.torques.size();

@@ -65,6 +65,11 @@ namespace gearfem::helical
   /// `o`) and sweep every torque and position. A position that fails ends the sweep with
   /// `failure` set; what was solved is kept.
   HelicalRun run_helical(const solve::GearContactInput &section, const SlicingOptions &o, const RunOptions &options);
+  /// The condensed cycle of `section` for `torques` as run_helical builds it (or reads it from
+  /// options.cycle_file, InputError for a torque outside its range; written to
+  /// options.write_cycle when set); the set-up and build times go into `run`.
+  condensed::CondensedCycle section_cycle(const solve::GearContactInput &section, const std::vector<double> &torques,
+                                          const RunOptions &options, HelicalRun &run);
   std::vector<TorqueSummary> summarise(const std::vector<HelicalResult> &results);
 
   /// helical.csv (a row per position and torque), slices.csv (a row per slice),

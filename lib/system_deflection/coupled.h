@@ -54,6 +54,54 @@ namespace gearfem::system_deflection
     double at(double z, double b) const;
   };
 
+  /// One mesh of a train on the system's shafts: its sliced pair (which must outlive the train)
+  /// and its layout (mesh.face_width the pair's).
+  struct TrainMesh
+  {
+    const helical::SlicedPair *pair = nullptr;
+    shafts::MeshLayout mesh;
+  };
+
+  /// Several meshes on one shafts::System (a gear train; one mesh is the pair of CoupledPair):
+  /// the slices of every mesh load the shafts, and every mesh's mismatch comes from all of
+  /// them (the influence coefficients over all slices, one factorisation). The fixed point is
+  /// found on all meshes' mismatches together.
+  class CoupledTrain
+  {
+  public:
+    /// InputError for a mesh layout that does not fit the system or its pair.
+    CoupledTrain(std::vector<TrainMesh> meshes, shafts::System system, CoupledOptions options = CoupledOptions());
+
+    /// The coupled solution of every mesh at its roll angle phi1[m] and pinion torque[m] [N m]
+    /// with its lead modification; `start`: each mesh's mismatch to start from (empty: none).
+    /// The iterations and residual are the train's, in every result. SolverError when the fixed
+    /// point does not settle.
+    std::vector<CoupledResult> solve(const std::vector<double> &phi1, const std::vector<double> &torque,
+                                     const std::vector<helical::LeadModification> &lead,
+                                     const std::vector<std::vector<double>> &start = {}) const;
+
+    /// The shafts' full solution (deflection lines, bearing reactions) under the meshes' results.
+    shafts::Solution shafts_under(const std::vector<CoupledResult> &r) const;
+
+    std::size_t size() const { return meshes_.size(); }
+    const TrainMesh &mesh(std::size_t m) const { return meshes_[m]; }
+    /// Slice centres of mesh m [m], -b/2 .. b/2.
+    const std::vector<double> &slice_centres(std::size_t m) const { return z_[m]; }
+    /// Influence coefficients A [m/N] of all slices' forces on their approach (mesh-major).
+    const Eigen::MatrixXd &influence() const { return A_; }
+    const shafts::System &system() const { return system_; }
+
+  private:
+    std::vector<shafts::PointLoad> loads(const std::vector<std::vector<double>> &force) const;
+    std::vector<TrainMesh> meshes_;
+    shafts::System system_;
+    CoupledOptions options_;
+    std::vector<std::vector<double>> z_, dz_;
+    std::vector<int> first_; ///< first row of each mesh in A_
+    Eigen::MatrixXd A_;
+  };
+
+  /// One pair on its two shafts: the train of one mesh, with the lead correction.
   class CoupledPair
   {
   public:
@@ -70,7 +118,7 @@ namespace gearfem::system_deflection
                         const std::vector<double> &start = {}) const;
 
     /// The shafts' full solution (deflection lines, bearing reactions) under a coupled result.
-    shafts::Solution shafts_under(const CoupledResult &r) const;
+    shafts::Solution shafts_under(const CoupledResult &r) const { return train_.shafts_under({r}); }
 
     /// The correction that cancels the mean mismatch of `results` (one torque, the positions of
     /// a cycle), fitted by slope and crowning (least squares over the slice centres).
@@ -80,19 +128,20 @@ namespace gearfem::system_deflection
     helical::LeadModification corrected(helical::LeadModification lead, const LeadCorrection &c) const;
 
     /// Influence coefficients A [m/N] of the slices' forces on their approach.
-    const Eigen::MatrixXd &influence() const { return A_; }
-    const shafts::System &system() const { return system_; }
-    const shafts::MeshLayout &mesh() const { return mesh_; }
+    const Eigen::MatrixXd &influence() const { return train_.influence(); }
+    const shafts::System &system() const { return train_.system(); }
+    const shafts::MeshLayout &mesh() const { return train_.mesh(0).mesh; }
 
   private:
-    std::vector<shafts::PointLoad> loads(const std::vector<double> &force) const;
-    const helical::SlicedPair &pair_;
-    shafts::System system_;
-    shafts::MeshLayout mesh_;
-    CoupledOptions options_;
-    std::vector<double> z_, dz_;
-    Eigen::MatrixXd A_;
+    CoupledTrain train_;
   };
+
+  /// The lead correction c fitted to a mean mismatch g at slice centres z over a face b:
+  /// slope and crowning of the least-squares quadratic.
+  LeadCorrection fit_correction(const std::vector<double> &z, const std::vector<double> &g, double b);
+  /// `lead` with `extra` [m] added to its profile at the slice centres z.
+  helical::LeadModification with_profile(helical::LeadModification lead, const std::vector<double> &z,
+                                         const std::vector<double> &extra, double b);
 
   /// A lead correction designed at one torque over positions of the cycle.
   struct DesignedCorrection

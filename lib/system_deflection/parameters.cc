@@ -4,6 +4,7 @@
 #include "base/units.h"
 #include "params/checked.h"
 #include "system_deflection/run.h"
+#include "system_deflection/shaft_parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -37,12 +38,15 @@ namespace gearfem::system_deflection
       return parse_double(entry, text, 0.0, 1e9) * scale;
     }
 
-    shafts::Shaft parse_shaft(dealii::ParameterHandler &prm, int i, std::vector<shafts::Bearing> &bearings)
+  } // namespace
+
+  shafts::Shaft parse_shaft(dealii::ParameterHandler &prm, const std::string &parent, const std::string &section, int i,
+                            const std::string &bearing_prefix, std::vector<shafts::Bearing> &bearings)
     {
-      const std::string sec = std::string("System/") + shaft_sections[i];
-      prm.enter_subsection(shaft_sections[i]);
+      const std::string sec = parent + "/" + section;
+      prm.enter_subsection(section);
       shafts::Shaft s;
-      s.name                    = shaft_sections[i];
+      s.name                    = section;
       s.material.youngs_modulus = params::get_double(prm, "Young's modulus") * 1e6;
       s.material.poisson_ratio  = params::get_double(prm, "Poisson's ratio");
       const std::string seg_entry = sec + "/Segments", brg_entry = sec + "/Bearings";
@@ -68,7 +72,7 @@ namespace gearfem::system_deflection
                              "comma-separated bearings z:radial:axial:tilting:torsional (mm, N/um, N/um, N m/mrad, "
                              "N m/rad; rigid or a number >= 0)");
           shafts::Bearing b;
-          b.name      = std::string(i == 0 ? "pinion" : "gear") + " bearing " + std::to_string(bearings.size() + 1);
+          b.name      = bearing_prefix + " bearing " + std::to_string(bearings.size() + 1);
           b.shaft     = i;
           b.z         = parse_double(brg_entry, f[0], 0.0, 1e5) * units::mm;
           b.radial    = stiffness(brg_entry, f[1], 1e6);
@@ -84,7 +88,24 @@ namespace gearfem::system_deflection
           throw InputError(brg_entry, to_string_g(b.z / units::mm) + " mm", "0 to the shaft's length " + mm_text(s.length()));
       return s;
     }
-  } // namespace
+
+  void declare_shaft_entries(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Double;
+    prm.declare_entry("Segments", "", Anything(),
+                      "The stepped shaft from its start: comma-separated segments length:outer diameter[:bore]. "
+                      "The part under the face is the gear body (its root diameter, or the rim's bore for a "
+                      "gear on a hub). Units: mm. Allowed: lengths and diameters > 0, bore below the outer "
+                      "diameter.");
+    prm.declare_entry("Bearings", "", Anything(),
+                      "Comma-separated bearings z:radial:axial:tilting:torsional: the position from the "
+                      "shaft's start and the spring of each (rigid, or a number; 0 leaves it free). The "
+                      "torsional spring at the input (pinion) or output (gear) coupling holds the torque. "
+                      "Units: mm, N/um, N/um, N m/mrad, N m/rad.");
+    prm.declare_entry("Young's modulus", "206000", Double(), "Units: MPa. Allowed: > 0.");
+    prm.declare_entry("Poisson's ratio", "0.3", Double(), "Units: none. Allowed: -1 to 0.5.");
+  }
 
   void declare_system_parameters(dealii::ParameterHandler &prm)
   {
@@ -119,18 +140,7 @@ namespace gearfem::system_deflection
     for (const char *s : shaft_sections)
       {
         prm.enter_subsection(s);
-        prm.declare_entry("Segments", "", Anything(),
-                          "The stepped shaft from its start: comma-separated segments length:outer diameter[:bore]. "
-                          "The part under the face is the gear body (its root diameter, or the rim's bore for a "
-                          "gear on a hub). Units: mm. Allowed: lengths and diameters > 0, bore below the outer "
-                          "diameter.");
-        prm.declare_entry("Bearings", "", Anything(),
-                          "Comma-separated bearings z:radial:axial:tilting:torsional: the position from the "
-                          "shaft's start and the spring of each (rigid, or a number; 0 leaves it free). The "
-                          "torsional spring at the input (pinion) or output (gear) coupling holds the torque. "
-                          "Units: mm, N/um, N/um, N m/mrad, N m/rad.");
-        prm.declare_entry("Young's modulus", "206000", Double(), "Units: MPa. Allowed: > 0.");
-        prm.declare_entry("Poisson's ratio", "0.3", Double(), "Units: none. Allowed: -1 to 0.5.");
+        declare_shaft_entries(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -148,7 +158,8 @@ namespace gearfem::system_deflection
     s.correction_positions = params::get_integer(prm, "Correction positions");
     if (s.coupled)
       for (int i = 0; i < 2; ++i)
-        s.system.shafts.push_back(parse_shaft(prm, i, s.system.bearings));
+        s.system.shafts.push_back(
+          parse_shaft(prm, "System", shaft_sections[i], i, i == 0 ? "pinion" : "gear", s.system.bearings));
     prm.leave_subsection();
     require_range("System/Pinion face start", p0, 0.0, 1e5, "mm");
     require_range("System/Gear face start", g0, 0.0, 1e5, "mm");

@@ -1,4 +1,5 @@
 #include "system_deflection/run.h"
+#include "system_deflection/tables.h"
 
 #include "base/atomic_file.h"
 #include "base/errors.h"
@@ -80,22 +81,10 @@ namespace gearfem::system_deflection
     if (pair)
       for (const double T : run.helical.torques)
         {
-          CoupledResult mean;
           int n = 0;
-          for (const auto &c : run.coupled)
-            if (c.helical.torque == T)
-              {
-                if (n++ == 0)
-                  mean = c;
-                else
-                  for (std::size_t k = 0; k < c.helical.slices.size(); ++k)
-                    mean.helical.slices[k].force += c.helical.slices[k].force;
-              }
-          if (n == 0)
-            continue;
-          for (auto &s : mean.helical.slices)
-            s.force /= n;
-          run.shafts.push_back({T, pair->shafts_under(mean)});
+          const CoupledResult mean = mean_at(run.coupled, T, n);
+          if (n > 0)
+            run.shafts.push_back({T, pair->shafts_under(mean)});
         }
     return run;
   }
@@ -112,36 +101,58 @@ namespace gearfem::system_deflection
     }
   } // namespace
 
-  void write_coupled(const CoupledRun &run, const std::filesystem::path &dir, const std::string &input_name)
+  CoupledResult mean_at(const std::vector<CoupledResult> &results, double torque, int &n)
   {
-    helical::write_helical(run.helical, dir, input_name);
-    const auto grid = std::size_t(run.helical.options.grid.size);
-    write(dir / "coupling.csv", [&](std::ostream &s) {
-      s << "position,torque_Nm,k_h_beta,iterations,residual_um,mean_approach_um,mismatch_max_um\n";
-      for (std::size_t i = 0; i < run.coupled.size(); ++i)
+    CoupledResult mean;
+    n = 0;
+    for (const auto &c : results)
+      if (c.helical.torque == torque)
         {
-          const auto &c = run.coupled[i];
-          double g = 0;
-          for (const double v : c.mismatch)
-            g = std::max(g, v);
-          s << i % grid << ',' << c.helical.torque << ',' << c.helical.k_h_beta << ',' << c.iterations << ','
-            << c.residual / units::um << ',' << c.mean_approach / units::um << ',' << g / units::um << '\n';
+          if (n++ == 0)
+            mean = c;
+          else
+            for (std::size_t k = 0; k < c.helical.slices.size(); ++k)
+              mean.helical.slices[k].force += c.helical.slices[k].force;
         }
+    for (auto &s : mean.helical.slices)
+      s.force /= std::max(n, 1);
+    return mean;
+  }
+
+  void write_shaft_tables(const std::vector<MeshTables> &meshes, const std::vector<TorqueShafts> &shafts,
+                          const shafts::System &system, const std::filesystem::path &dir)
+  {
+    const bool staged = !meshes.empty() && meshes.front().stage > 0;
+    const std::string col = staged ? "stage," : "";
+    const auto stage = [&](const MeshTables &m) { return staged ? std::to_string(m.stage) + "," : std::string(); };
+    write(dir / "coupling.csv", [&](std::ostream &s) {
+      s << col << "position,torque_Nm,k_h_beta,iterations,residual_um,mean_approach_um,mismatch_max_um\n";
+      for (const auto &m : meshes)
+        for (std::size_t i = 0; i < m.coupled->size(); ++i)
+          {
+            const auto &c = (*m.coupled)[i];
+            double g = 0;
+            for (const double v : c.mismatch)
+              g = std::max(g, v);
+            s << stage(m) << i % m.grid << ',' << c.helical.torque << ',' << c.helical.k_h_beta << ',' << c.iterations
+              << ',' << c.residual / units::um << ',' << c.mean_approach / units::um << ',' << g / units::um << '\n';
+          }
     });
     write(dir / "misalignment.csv", [&](std::ostream &s) {
-      s << "position,torque_Nm,slice,z_mm,force_N,approach_um,mismatch_um\n";
-      for (std::size_t i = 0; i < run.coupled.size(); ++i)
-        {
-          const auto &c = run.coupled[i];
-          for (std::size_t k = 0; k < c.z.size(); ++k)
-            s << i % grid << ',' << c.helical.torque << ',' << k << ',' << c.z[k] / units::mm << ','
-              << c.helical.slices[k].force << ',' << c.approach[k] / units::um << ',' << c.mismatch[k] / units::um
-              << '\n';
-        }
+      s << col << "position,torque_Nm,slice,z_mm,force_N,approach_um,mismatch_um\n";
+      for (const auto &m : meshes)
+        for (std::size_t i = 0; i < m.coupled->size(); ++i)
+          {
+            const auto &c = (*m.coupled)[i];
+            for (std::size_t k = 0; k < c.z.size(); ++k)
+              s << stage(m) << i % m.grid << ',' << c.helical.torque << ',' << k << ',' << c.z[k] / units::mm << ','
+                << c.helical.slices[k].force << ',' << c.approach[k] / units::um << ',' << c.mismatch[k] / units::um
+                << '\n';
+          }
     });
     write(dir / "shafts.csv", [&](std::ostream &s) {
       s << "torque_Nm,shaft,z_mm,u_x_um,u_y_um,u_z_um,theta_x_mrad,theta_y_mrad,theta_z_mrad\n";
-      for (const auto &t : run.shafts)
+      for (const auto &t : shafts)
         for (const auto &n : t.solution.nodes)
           s << t.torque << ',' << n.shaft << ',' << n.z / units::mm << ',' << n.u[0] / units::um << ','
             << n.u[1] / units::um << ',' << n.u[2] / units::um << ',' << n.u[3] * 1e3 << ',' << n.u[4] * 1e3 << ','
@@ -149,16 +160,23 @@ namespace gearfem::system_deflection
     });
     write(dir / "bearings.csv", [&](std::ostream &s) {
       s << "torque_Nm,bearing,shaft,z_mm,F_x_N,F_y_N,F_z_N,M_x_Nm,M_y_Nm,M_z_Nm\n";
-      for (const auto &t : run.shafts)
+      for (const auto &t : shafts)
         for (std::size_t i = 0; i < t.solution.reactions.size(); ++i)
           {
             const auto &r = t.solution.reactions[i];
-            const auto &b = run.system.bearings[i];
+            const auto &b = system.bearings[i];
             s << t.torque << ',' << r.name << ',' << b.shaft << ',' << b.z / units::mm << ',' << r.force.x() << ','
               << r.force.y() << ',' << r.force.z() << ',' << r.moment.x() << ',' << r.moment.y() << ','
               << r.moment.z() << '\n';
           }
     });
+  }
+
+  void write_coupled(const CoupledRun &run, const std::filesystem::path &dir, const std::string &input_name)
+  {
+    helical::write_helical(run.helical, dir, input_name);
+    write_shaft_tables({MeshTables{0, std::size_t(run.helical.options.grid.size), &run.coupled}}, run.shafts, run.system,
+                       dir);
     write(dir / "system.json", [&](std::ostream &s) {
       const auto &m = run.mesh;
       s << "{\n  \"input\": \"" << input_name << "\",\n  \"centre_distance_mm\": " << run.system.shafts[1].x / units::mm

@@ -47,11 +47,12 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
-def shafts_of(prm):
-    """[(Shaft, supports, axial station, torsion station, raw)] per shaft (SI) from the System section."""
+def shafts_of(prm, sections=None):
+    """[(Shaft, supports, axial station, torsion station)] per shaft (SI) of the System section
+    (or the named sections, e.g. "Train/Shaft 1")."""
     res = []
-    for s in SHAFT_SECTIONS:
-        p = prm["System/" + s]
+    for s in sections or ["System/" + x for x in SHAFT_SECTIONS]:
+        p = prm[s]
         E = float(p.get("Young's modulus", "206000")) * 1e6
         nu = float(p.get("Poisson's ratio", "0.3"))
         segs = []
@@ -70,62 +71,109 @@ def shafts_of(prm):
     return res
 
 
-def mesh_loads(system, forces):
-    """Point loads [(z, F, C)] on each shaft (SI, about each shaft's own axis) of the mean slice
-    forces {z_slice: F}: F n (+ tan beta_b F axially) on the gear at its pitch point, the
-    opposite on the pinion (docs/system-deflection.md, Model)."""
-    a = system["centre_distance_mm"] * 1e-3
-    r1 = system["pitch_radius_1_mm"] * 1e-3
+def pair_layout(system):
+    """The mesh layout of a single pair's system.json: pinion shaft 0 at the origin, the gear's
+    shaft 1 at the centre distance along +x."""
+    return dict(system, P=(0.0, 0.0), Q=(system["centre_distance_mm"] * 1e-3, 0.0), pinion_shaft=0, gear_shaft=1)
+
+
+def train_layouts(system):
+    """The mesh layouts of a train's system.json (shafts numbered from 0)."""
+    sh = [(x["x_mm"] * 1e-3, x["y_mm"] * 1e-3) for x in system["shafts"]]
+    return [dict(st, P=sh[st["pinion_shaft"] - 1], Q=sh[st["gear_shaft"] - 1], pinion_shaft=st["pinion_shaft"] - 1,
+                 gear_shaft=st["gear_shaft"] - 1) for st in system["stages"]]
+
+
+def cross(u, v):
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
+def mesh_loads(lay, forces, loads=None):
+    """Point loads {shaft: [(z, F, C)]} (SI, C about the shaft's own axis) of the mean slice
+    forces {z_slice: F} of one mesh: F n (+ tan beta_b F axially) on the gear at its pitch point,
+    the opposite on the pinion (docs/system-deflection.md, Model); added to `loads`."""
+    loads = {} if loads is None else loads
+    P, Q = lay["P"], lay["Q"]
+    a = math.hypot(Q[0] - P[0], Q[1] - P[1])
+    e = ((Q[0] - P[0]) / a, (Q[1] - P[1]) / a, 0.0)
+    r1 = lay["pitch_radius_1_mm"] * 1e-3
     r2 = a - r1
-    al = math.radians(system["alpha_wt_deg"])
-    tb = math.tan(math.radians(system["beta_b_deg"]))
-    b = system["face_width_mm"] * 1e-3
-    t = (0.0, float(system["drive_sense"]), 0.0)
-    n = (math.sin(al), math.cos(al) * t[1], 0.0)
-    loads = ([], [])
-    cross = lambda u, v: (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])  # noqa
+    al = math.radians(lay["alpha_wt_deg"])
+    tb = math.tan(math.radians(lay["beta_b_deg"]))
+    b = lay["face_width_mm"] * 1e-3
+    d = float(lay["drive_sense"])
+    t = (-e[1] * d, e[0] * d, 0.0)
+    n = tuple(math.cos(al) * t[i] + math.sin(al) * e[i] for i in range(3))
     for zc, F in sorted(forces.items()):
         Fg = (F * n[0], F * n[1], F * tb)
         Fp = tuple(-x for x in Fg)
-        loads[1].append((system["gear_face_start_mm"] * 1e-3 + zc + b / 2, Fg, cross((-r2, 0.0, 0.0), Fg)))
-        loads[0].append((system["pinion_face_start_mm"] * 1e-3 + zc + b / 2, Fp, cross((r1, 0.0, 0.0), Fp)))
+        loads.setdefault(lay["gear_shaft"], []).append(
+            (lay["gear_face_start_mm"] * 1e-3 + zc + b / 2, Fg, cross(tuple(-r2 * x for x in e), Fg)))
+        loads.setdefault(lay["pinion_shaft"], []).append(
+            (lay["pinion_face_start_mm"] * 1e-3 + zc + b / 2, Fp, cross(tuple(r1 * x for x in e), Fp)))
     return loads, n, (r1, r2)
 
 
-def mean_forces(rows):
-    """{torque: {z_slice [m]: mean slice force over the positions [N]}} of misalignment.csv."""
+def mean_forces(rows, stage=None):
+    """{torque: {z_slice [m]: mean slice force over the positions [N]}} of misalignment.csv (of
+    one stage of a train)."""
     acc = defaultdict(lambda: defaultdict(list))
     for r in rows:
-        acc[float(r["torque_Nm"])][float(r["z_mm"]) * 1e-3].append(float(r["force_N"]))
+        if stage is None or int(r["stage"]) == stage:
+            acc[float(r["torque_Nm"])][float(r["z_mm"]) * 1e-3].append(float(r["force_N"]))
     return {T: {z: sum(v) / len(v) for z, v in d.items()} for T, d in acc.items()}
 
 
-def load_run(out, name):
+def load_run(out, name, prm=None):
+    """A run's tables; a train's helical.json per stage (stage_<k>/) under "stages"."""
     d = os.path.join(out, name)
-    with open(os.path.join(d, "helical.json")) as f:
-        hel = json.load(f)
-    sysj = None
+    run = dict(prm=parse_prm(prm or os.path.join(out, name + ".prm")))
+    if os.path.exists(os.path.join(d, "helical.json")):
+        with open(os.path.join(d, "helical.json")) as f:
+            run["helical"] = json.load(f)
+    else:
+        run["stages"] = []
+        while os.path.exists(os.path.join(d, f"stage_{len(run['stages']) + 1}", "helical.json")):
+            with open(os.path.join(d, f"stage_{len(run['stages']) + 1}", "helical.json")) as f:
+                run["stages"].append(json.load(f))
+    run["system"] = None
     if os.path.exists(os.path.join(d, "system.json")):
         with open(os.path.join(d, "system.json")) as f:
-            sysj = json.load(f)
-        tabs = {k: read_csv(os.path.join(d, k + ".csv")) for k in ("misalignment", "shafts", "bearings", "coupling")}
-    else:
-        tabs = {}
-    return dict(helical=hel, system=sysj, prm=parse_prm(os.path.join(out, name + ".prm")), **tabs)
+            run["system"] = json.load(f)
+        for k in ("misalignment", "shafts", "bearings", "coupling"):
+            run[k] = read_csv(os.path.join(d, k + ".csv"))
+    return run
 
 
 def k_at(run, T):
     return next(t["k_h_beta"] for t in run["helical"]["torques"] if abs(t["torque_Nm"] - T) < 1e-9)
 
 
-def beam_checks(c, name, run, md):
+def run_loads(run):
+    """{input torque: {shaft: [(z, F, C)]}} and the shafts' positions of a pair's or a train's run."""
+    if "stages" in run["system"]:
+        lays = train_layouts(run["system"])
+        ratio = [st["torque_ratio"] for st in run["system"]["stages"]]
+        per = [mean_forces(run["misalignment"], k + 1) for k in range(len(lays))]
+        out = {}
+        for T in sorted(per[0]):
+            loads = {}
+            for k, lay in enumerate(lays):
+                mesh_loads(lay, next(f for Tk, f in per[k].items() if abs(Tk - T * ratio[k]) < 1e-9 * Tk), loads)
+            out[T] = loads
+        return out, [(x["x_mm"] * 1e-3, x["y_mm"] * 1e-3) for x in run["system"]["shafts"]]
+    lay = pair_layout(run["system"])
+    return ({T: mesh_loads(lay, f)[0] for T, f in mean_forces(run["misalignment"]).items()},
+            [lay["P"], lay["Q"]])
+
+
+def beam_checks(c, name, run, md, sections=None):
     """Deflection lines and reactions of every shaft and torque against the closed form, and
     equilibrium of the reactions with the mesh loads (in the system frame)."""
-    shafts = shafts_of(run["prm"])
-    forces = mean_forces(run["misalignment"])
+    shafts = shafts_of(run["prm"], sections)
+    per_torque, axes = run_loads(run)
     worst_u = worst_r = worst_eq = 0.0
-    for T, fz in sorted(forces.items()):
-        loads, _, _ = mesh_loads(run["system"], fz)
+    for T, loads in sorted(per_torque.items()):
         for s, (shaft, sup, ax, tz) in enumerate(shafts):
             rows = [r for r in run["shafts"] if float(r["torque_Nm"]) == T and int(r["shaft"]) == s]
             st = [float(r["z_mm"]) * 1e-3 for r in rows]
@@ -145,27 +193,25 @@ def beam_checks(c, name, run, md):
             fmax = max(math.sqrt(sum(x * x for x in F)) for _, F, _ in loads[s]) * len(loads[s])
             for zb, F, C in reac:
                 r = next(x for x in brows if abs(float(x["z_mm"]) * 1e-3 - zb) < 1e-12)
-                got = [float(r[k]) for k in ("F_x_N", "F_y_N", "F_z_N")] + [float(r[k]) for k in ("M_x_Nm", "M_y_Nm",
-                                                                                                  "M_z_Nm")]
+                got = [float(r[k]) for k in ("F_x_N", "F_y_N", "F_z_N", "M_x_Nm", "M_y_Nm", "M_z_Nm")]
                 want = list(F) + list(C)
                 worst_r = max(worst_r, max(abs(g - w) for g, w in zip(got[:3], want[:3])) / fmax,
                               max(abs(g - w) for g, w in zip(got[3:], want[3:])) / (fmax * 0.1))
             # Equilibrium of gearfem's reactions with the applied loads, forces and moments about
-            # the system origin (the shaft's axis at x = 0 or the centre distance).
-            x0 = 0.0 if s == 0 else run["system"]["centre_distance_mm"] * 1e-3
+            # the system origin.
+            x0, y0 = axes[s]
             tot = [0.0] * 6
-            pts = [(z, F, C) for z, F, C in loads[s]] + [
+            pts = list(loads[s]) + [
                 (float(r["z_mm"]) * 1e-3, [float(r[k]) for k in ("F_x_N", "F_y_N", "F_z_N")],
                  [float(r[k]) for k in ("M_x_Nm", "M_y_Nm", "M_z_Nm")]) for r in brows]
             for z, F, C in pts:
-                p = (x0, 0.0, z)
-                m = (p[1] * F[2] - p[2] * F[1], p[2] * F[0] - p[0] * F[2], p[0] * F[1] - p[1] * F[0])
+                m = cross((x0, y0, z), F)
                 for i in range(3):
                     tot[i] += F[i]
                     tot[3 + i] += m[i] + C[i]
-            lever = max(run["system"]["centre_distance_mm"] * 1e-3, shaft.length)
+            lever = max(math.hypot(x0, y0), shaft.length, 0.1)
             worst_eq = max(worst_eq, max(abs(v) for v in tot[:3]) / fmax, max(abs(v) for v in tot[3:]) / (fmax * lever))
-    c.at_most(f"{name}: deflection lines u, theta of both shafts against the closed form (rel. to the largest)",
+    c.at_most(f"{name}: deflection lines u, theta of every shaft against the closed form (rel. to the largest)",
               worst_u, 1e-6, "shaft_reference.py: statics and the exact integral of M/EI, shear and torsion")
     c.at_most(f"{name}: bearing reactions against statics (rel. to the mesh load)", worst_r, 1e-6,
               "shaft_reference.py: statics of the two-bearing shaft")
@@ -185,7 +231,7 @@ def parts_of_mismatch(run, T):
     """Slopes over the face [m/m] of the pinion's two mismatch parts under the mean loads at T,
     from the closed form: its bending (u . n) and its torsion ((theta x r_1) . n)."""
     shafts = shafts_of(run["prm"])
-    loads, n, (r1, _) = mesh_loads(run["system"], mean_forces(run["misalignment"])[T])
+    loads, n, (r1, _) = mesh_loads(pair_layout(run["system"]), mean_forces(run["misalignment"])[T])
     shaft, sup, ax, tz = shafts[0]
     st = [z for z, _, _ in loads[0]]
     ref, _ = sr.deflection(shaft, sup, ax, tz, loads[0], st)
@@ -205,6 +251,7 @@ def main():
     names = ["straddle", "straddle_uncorrected", "straddle_none", "straddle_helical", "overhung"]
     try:
         run = {n: load_run(a.out, n) for n in names}
+        run["two_stage"] = load_run(a.out, "two_stage", os.path.join(here, "..", "..", "inputs", "system_two_stage.prm"))
     except (OSError, ValueError, KeyError, StopIteration) as e:
         c.true("results readable", False, str(e), "all runs of run.sh", "run.sh")
         return c.finish()
@@ -215,9 +262,24 @@ def main():
     for n in ("straddle_uncorrected", "straddle_helical", "overhung"):
         beam_checks(c, n, run[n], md)
 
+    # The two-stage train: three shafts, the intermediate one loaded by both meshes.
+    ts = run["two_stage"]
+    beam_checks(c, "two_stage", ts, md, [f"Train/Shaft {k}" for k in (1, 2, 3)])
+    T_in = max(float(r["torque_Nm"]) for r in ts["bearings"])
+    mz = max(abs(float(r["M_z_Nm"])) for r in ts["bearings"] if int(r["shaft"]) == 1 and float(r["torque_Nm"]) == T_in)
+    gear1 = T_in * ts["system"]["stages"][1]["torque_ratio"]
+    c.at_most("two_stage: torque the intermediate shaft's torsional support takes / the torque it carries", mz / gear1,
+              1e-9, "the two meshes balance it: each stage's slices carry its pinion torque / r_b1, and stage 2's "
+              "pinion torque is stage 1's gear torque")
+    for k, st in enumerate(ts["stages"]):
+        for t in st["torques"]:
+            c.info(f"two_stage: K_Hbeta of stage {k + 1} at {t['torque_Nm']:g} N m", f"{t['k_h_beta']:.3f}", "—",
+                   "both meshes on the shafts together")
+
     # The fixed point: every position converged within the tolerance.
-    for n in ("straddle", "straddle_uncorrected", "straddle_helical", "overhung"):
-        tol = float(run[n]["prm"]["System"].get("Tolerance", "0.001"))
+    for n in ("straddle", "straddle_uncorrected", "straddle_helical", "overhung", "two_stage"):
+        sec = "Train" if n == "two_stage" else "System"
+        tol = float(run[n]["prm"][sec].get("Tolerance", "0.001"))
         res = max(float(r["residual_um"]) for r in run[n]["coupling"])
         its = [int(r["iterations"]) for r in run[n]["coupling"]]
         c.at_most(f"{n}: coupling residual over all positions", res, tol, "System/Tolerance", " um")
@@ -320,7 +382,7 @@ def plot(run, path):
     ax[0].set_title("straddled pinion z 20/60, b 40 mm")
     r = run["straddle_uncorrected"]
     rows = [x for x in r["shafts"] if float(x["torque_Nm"]) == 400.0]
-    loads, _, _ = mesh_loads(r["system"], mean_forces(r["misalignment"])[400.0])
+    loads, _, _ = mesh_loads(pair_layout(r["system"]), mean_forces(r["misalignment"])[400.0])
     for s, ((shaft, sup, axs, tz), lab) in enumerate(zip(shafts_of(r["prm"]), ("pinion shaft", "gear shaft"))):
         zf = [shaft.length * k / 400 for k in range(401)]
         ref, _ = sr.deflection(shaft, sup, axs, tz, loads[s], zf)

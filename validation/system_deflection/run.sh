@@ -2,7 +2,8 @@
 # The gear pair on its shafts (see README.md): the straddled spur pair of
 # inputs/system_straddle.prm with its lead correction (which builds the transverse section's
 # cycle), then on that cycle uncorrected, uncoupled and as a 15 deg helical pair; and the
-# overhung pinion of inputs/system_overhung.prm. About 40 s on 2 cores. check.py ends with
+# overhung pinion of inputs/system_overhung.prm; and the two-stage train of
+# inputs/system_two_stage.prm. About 1 min on 2 cores. check.py ends with
 # `system_deflection: PASS` or `system_deflection: FAIL`.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
@@ -39,4 +40,8 @@ done
 { cat "$root/inputs/system_overhung.prm"; printf 'subsection Solve\n  set Plots = false\nend\n'
   printf 'subsection System\n  set Correction torque = 0\nend\n'; } > "$out/overhung.prm"
 run overhung
+echo "== two_stage"
+"$gearfem" system "$root/inputs/system_two_stage.prm" --output-dir "$out/two_stage" > "$out/two_stage.log" 2>&1 ||
+  { cat "$out/two_stage.log"; exit 1; }
+grep -E "^stage|^on the shafts" "$out/two_stage.log"
 check --out "$out" --table "$here/table.md" --plot "$here/system_deflection.png"

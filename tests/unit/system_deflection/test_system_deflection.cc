@@ -181,3 +181,50 @@ TEST(SystemDeflection, BadLayoutsAreNamed)
   mesh.pinion_face_start = 0.09; // the face runs off the shaft's end
   EXPECT_THROW(system_deflection::CoupledPair(pair, sys, mesh), InputError);
 }
+
+TEST(SystemDeflection, TrainOfTwoPairsOnSeparateShaftsIsEachPairAlone)
+{
+  // Two copies of the overhung layout in one system (shafts 0-1 and 2-3, apart): the train's
+  // joint fixed point and influence matrix must decouple into each pair's own solution, at its
+  // own position and torque (independence of the blocks).
+  auto &b = built();
+  const helical::SlicedPair pair(b.cycle, b.in, spur(7));
+  shafts::System one, two;
+  shafts::MeshLayout m1, m2;
+  layout(one, m1, 0.035);
+  layout(two, m2, 0.045); // a stiffer pinion shaft: a different mismatch
+  shafts::System both = one;
+  for (auto sh : two.shafts)
+    sh.y = 0.5, both.shafts.push_back(sh);
+  for (auto br : two.bearings)
+    br.shaft += 2, both.bearings.push_back(br);
+  const shafts::MeshLayout m2_alone = m2;
+  m2.pinion_shaft = 2, m2.gear_shaft = 3;
+  const system_deflection::CoupledTrain train({{&pair, m1}, {&pair, m2}}, both);
+  const double p1 = b.cycle.positions[3].second, p2 = b.cycle.positions[7].second;
+  const auto r = train.solve({p1, p2}, {300, 200}, {helical::LeadModification(), helical::LeadModification()});
+  ASSERT_EQ(r.size(), 2u);
+  const system_deflection::CoupledPair alone1(pair, one, m1), alone2(pair, two, m2_alone);
+  const auto a1 = alone1.solve(p1, 300, helical::LeadModification());
+  const auto a2 = alone2.solve(p2, 200, helical::LeadModification());
+  // The influence of one pair's slices on the other's approach is zero.
+  const auto &A = train.influence();
+  EXPECT_EQ(A.block(0, 7, 7, 7).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(A.block(7, 0, 7, 7).cwiseAbs().maxCoeff(), 0.0);
+  for (std::size_t k = 0; k < 7; ++k)
+    {
+      // Both at their fixed points to the tolerance (1e-9 m): the joint iteration stops later.
+      EXPECT_NEAR(r[0].mismatch[k], a1.mismatch[k], 3e-9) << k;
+      EXPECT_NEAR(r[1].mismatch[k], a2.mismatch[k], 3e-9) << k;
+      EXPECT_NEAR(r[0].helical.slices[k].force, a1.helical.slices[k].force, 1e-3 * a1.helical.normal_force) << k;
+      EXPECT_NEAR(r[1].helical.slices[k].force, a2.helical.slices[k].force, 1e-3 * a2.helical.normal_force) << k;
+    }
+  EXPECT_EQ(r[0].iterations, r[1].iterations); // one fixed point for the train
+  // Statics of the train's shafts: each pinion shaft's bearings carry its own pair's force.
+  const auto s = train.shafts_under(r);
+  for (const auto &[first, T] : {std::pair<std::size_t, double>{0, 300.0}, {4, 200.0}})
+    {
+      const Eigen::Vector3d R = s.reactions[first].force + s.reactions[first + 1].force;
+      EXPECT_NEAR(R.norm(), T / b.in.pair->base_radius(1), 1e-9 * T / b.in.pair->base_radius(1));
+    }
+}
