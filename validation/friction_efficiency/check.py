@@ -19,7 +19,7 @@ import sys
 
 import numpy as np
 
-from vcheck import Checks
+from vcheck import Checks, read_prm
 
 UNIT = re.compile(r"\s*\[[^\]]*\]\s*$")
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -45,20 +45,6 @@ FRICTION_RUNS = {"demo": ["demo_mu03", "demo_mu05", "demo_mu08", "demo_pen05", "
 
 
 # ----------------------------------------------------------------------------- reading
-def read_prm(path):
-    """The entries of a parameter file as 'Section/Sub/Entry' -> value (later entries win)."""
-    out, stack = {}, []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if line.startswith("subsection "):
-                stack.append(line[len("subsection "):].strip())
-            elif line == "end":
-                stack.pop()
-            elif line.startswith("set "):
-                k, v = line[4:].split("=", 1)
-                out["/".join(stack + [k.strip()])] = v.strip()
-    return out
 
 
 def read(path):

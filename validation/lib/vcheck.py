@@ -201,3 +201,19 @@ def load_shares(rows, tkey, torque, position, kappa=None):
         else:
             out[(int(r["pinion_tooth"]), int(r["gear_tooth"]))] = r["share"]
     return out
+
+
+def read_prm(path):
+    """The entries of a parameter file as 'Section/Sub/Entry' -> value (later entries win)."""
+    out, stack = {}, []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line.startswith("subsection "):
+                stack.append(line[len("subsection "):].strip())
+            elif line == "end":
+                stack.pop()
+            elif line.startswith("set "):
+                k, v = line[4:].split("=", 1)
+                out["/".join(stack + [k.strip()])] = v.strip()
+    return out

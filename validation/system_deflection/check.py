@@ -18,7 +18,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "lib"))
 sys.path.insert(0, os.path.join(here, "..", "helical"))
 sys.path.insert(0, here)
-from vcheck import Checks, write_if_changed  # noqa: E402
+from vcheck import Checks, read_prm, write_if_changed  # noqa: E402
 import iso_reference as iso  # noqa: E402
 import shaft_reference as sr  # noqa: E402
 
@@ -28,17 +28,10 @@ SHAFT_SECTIONS = ("Pinion shaft", "Gear shaft")
 
 def parse_prm(path):
     """{"Section/Sub": {entry: value}} of a .prm file (the last `set` of an entry wins)."""
-    out, stack = defaultdict(dict), []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if line.startswith("subsection "):
-                stack.append(line[len("subsection "):].strip())
-            elif line == "end":
-                stack.pop()
-            elif line.startswith("set "):
-                k, v = line[4:].split("=", 1)
-                out["/".join(stack)][k.strip()] = v.strip()
+    out = defaultdict(dict)
+    for k, v in read_prm(path).items():
+        sec, _, entry = k.rpartition("/")
+        out[sec][entry] = v
     return out
 
 
