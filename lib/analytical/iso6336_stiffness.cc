@@ -64,4 +64,15 @@ namespace gearfem::analytical::iso6336
     s.c_gamma_beta = 0.85 * s.c_gamma_alpha;
     return s;
   }
+
+  double face_load_factor_method_c(double F_beta_y, double c_gamma_beta, double F_m_over_b)
+  {
+    if (!(F_m_over_b > 0) || !(F_beta_y >= 0) || !(c_gamma_beta > 0))
+      throw InputError("face load factor", to_string_g(F_beta_y) + ", " + to_string_g(c_gamma_beta) + ", " +
+                                             to_string_g(F_m_over_b),
+                       "F_beta_y >= 0, c_gamma_beta > 0 and F_m/b > 0");
+    const double r = F_beta_y * c_gamma_beta / F_m_over_b;
+    const double k = 1 + 0.5 * r;
+    return k <= 2 ? k : std::sqrt(2 * r);
+  }
 } // namespace gearfem::analytical::iso6336

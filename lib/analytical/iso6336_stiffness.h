@@ -40,4 +40,10 @@ namespace gearfem::analytical::iso6336
   double q_prime(double zn1, double zn2, double x1, double x2);
   /// All of clause 9 (method B). Throws InputError for z < 5, alpha_n out of range, etc.
   Stiffness mesh_stiffness(const StiffnessInput &in);
+
+  /// The face load factor K_Hbeta of ISO 6336-1:2006 clause 7 (method C) from the effective
+  /// equivalent misalignment F_beta_y: 1 + F_beta_y c_gamma_beta / (2 F_m/b) when that is <= 2,
+  /// else sqrt(2 F_beta_y c_gamma_beta / (F_m/b)). Any consistent units (the standard's: um,
+  /// N/(mm um), N/mm).
+  double face_load_factor_method_c(double F_beta_y, double c_gamma_beta, double F_m_over_b);
 } // namespace gearfem::analytical::iso6336

@@ -4,6 +4,7 @@
 // leaves a truncated file behind.
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <string>
 
 namespace gearfem
@@ -48,6 +49,17 @@ namespace gearfem
     TemporaryPath tmp_;
     std::ofstream out_;
   };
+
+  /// Write `target` atomically through `body(std::ostream &)`, numbers with `digits`
+  /// significant digits.
+  template <typename F>
+  void write_atomically(const std::filesystem::path &target, F &&body, int digits = 10)
+  {
+    AtomicOutputFile f(target);
+    f.stream() << std::setprecision(digits);
+    body(f.stream());
+    f.commit();
+  }
 
   /// Write `content` to `target` atomically.
   void write_file_atomically(const std::filesystem::path &target, const std::string &content);

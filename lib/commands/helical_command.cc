@@ -74,12 +74,21 @@ namespace gearfem::commands
             it = std::max(it, c.iterations), res = std::max(res, c.residual);
           out << "on the shafts: up to " << it << " iterations per position, residual <= " << res / units::um
               << " um; wrote coupling.csv, misalignment.csv, shafts.csv, bearings.csv, system.json\n";
+          for (const auto &m : coupled.iso)
+            out << "T " << m.torque << " N m on the shafts: K_Hbeta " << m.k_h_beta_coupled
+                << "; ISO 6336-1 method C with the shafts' mismatch" << (coupled.corrected ? " and the correction" : "")
+                << " F_beta_y " << m.f_beta_y / units::um << " um: "
+                << m.k_h_beta << "\n";
         }
       out << "build " << r.build_seconds << " s, sweep " << r.sweep_seconds << " s (" << r.results.size()
           << " positions, " << r.sweep_seconds / std::max<std::size_t>(1, r.results.size()) * 1e3
           << " ms each); wrote helical.csv, slices.csv, lines.csv, helical.json\n";
       if (in.solve.plots)
-        run_plot_script("plot_helical.py", {ctx.output_dir.string()}, &out);
+        {
+          run_plot_script("plot_helical.py", {ctx.output_dir.string()}, &out);
+          if (sys.coupled)
+            run_plot_script("plot_system.py", {ctx.output_dir.string()}, &out);
+        }
       if (!r.failure.empty())
         throw SolverError(r.failure + " (the " + std::to_string(r.results.size()) + " positions before it are written)");
     }

@@ -51,7 +51,8 @@ namespace gearfem::commands
         }
       if (ctx.validate_only)
         return;
-      const auto run = system_deflection::run_train(std::move(train), &out);
+      const bool plots = train.stages.front().request.section.solve.plots;
+      const auto run   = system_deflection::run_train(std::move(train), &out);
       system_deflection::write_train(run, ctx.output_dir, ctx.input_file.filename().string());
       out << std::setprecision(5);
       for (std::size_t k = 0; k < run.stages.size(); ++k)
@@ -59,6 +60,10 @@ namespace gearfem::commands
           out << "stage " << k + 1 << ", T " << t.torque << " N m: STE mean " << t.ste_mean / units::um << " um, p-p "
               << t.ste_pp / units::um << " um; K_Hbeta " << t.k_h_beta << "; p_max " << t.p_max / 1e6
               << " MPa; root stress " << t.root_stress_pinion / 1e6 << " / " << t.root_stress_gear / 1e6 << " MPa\n";
+      for (std::size_t k = 0; k < run.iso.size(); ++k)
+        for (const auto &m : run.iso[k])
+          out << "stage " << k + 1 << ", T " << m.torque << " N m: ISO 6336-1 method C with the shafts' mismatch "
+              << "F_beta_y " << m.f_beta_y / units::um << " um: K_Hbeta " << m.k_h_beta << "\n";
       int it = 0;
       double res = 0;
       for (const auto &c : run.coupled.front())
@@ -66,6 +71,8 @@ namespace gearfem::commands
       out << "on the shafts: up to " << it << " iterations per position, residual <= " << res / units::um
           << " um; sweep " << run.sweep_seconds << " s (" << run.coupled.front().size()
           << " positions); wrote stage_<k>/, coupling.csv, misalignment.csv, shafts.csv, bearings.csv, system.json\n";
+      if (plots)
+        run_plot_script("plot_system.py", {ctx.output_dir.string()}, &out);
       if (!run.failure.empty())
         throw SolverError(run.failure + " (the " + std::to_string(run.coupled.front().size()) +
                           " positions before it are written)");

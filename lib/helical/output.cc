@@ -10,21 +10,13 @@ namespace gearfem::helical
   namespace
   {
     constexpr double MPa = 1e6;
-    template <typename F>
-    void write(const std::filesystem::path &file, F &&body)
-    {
-      AtomicOutputFile f(file);
-      f.stream() << std::setprecision(10);
-      body(f.stream());
-      f.commit();
-    }
   } // namespace
 
   void write_helical(const HelicalRun &run, const std::filesystem::path &dir, const std::string &input_name)
   {
     const auto &o = run.options;
     const double b = o.helix.face_width;
-    write(dir / "helical.csv", [&](std::ostream &s) {
+    write_atomically(dir / "helical.csv", [&](std::ostream &s) {
       s << "position,phi1_deg,torque_Nm,ste_um,k_mesh_N_per_um,k_tangent_N_per_um,k_h_beta,p_max_MPa,"
            "root_stress_pinion_MPa,root_stress_gear_MPa,n_pairs,unknowns,iterations,seconds\n";
       for (std::size_t i = 0; i < run.results.size(); ++i)
@@ -37,7 +29,7 @@ namespace gearfem::helical
             << r.seconds << '\n';
         }
     });
-    write(dir / "slices.csv", [&](std::ostream &s) {
+    write_atomically(dir / "slices.csv", [&](std::ostream &s) {
       s << "position,torque_Nm,slice,z_mm,phi1_deg,force_N,load_N_per_mm,p_max_MPa,root_stress_pinion_MPa,"
            "root_stress_gear_MPa,lead_gap_um\n";
       for (std::size_t i = 0; i < run.results.size(); ++i)
@@ -51,7 +43,7 @@ namespace gearfem::helical
               << sl.lead_gap / units::um << '\n';
           }
     });
-    write(dir / "lines.csv", [&](std::ostream &s) {
+    write_atomically(dir / "lines.csv", [&](std::ostream &s) {
       s << "position,torque_Nm,pinion_tooth,gear_tooth,slice,z_mm,load_N_per_mm\n";
       for (std::size_t i = 0; i < run.results.size(); ++i)
         for (const auto &l : run.results[i].lines)
@@ -61,7 +53,7 @@ namespace gearfem::helical
                 << l.gear_tooth << ',' << k << ',' << run.results[i].slices[k].z / units::mm << ','
                 << l.load_per_width[k] * units::mm << '\n';
     });
-    write(dir / "helical.json", [&](std::ostream &s) {
+    write_atomically(dir / "helical.json", [&](std::ostream &s) {
       const auto &h = o.helix;
       s << "{\n  \"format\": \"gearfem-helical\", \"version\": 1, \"input\": \"" << input_name << "\",\n"
         << "  \"helix_angle_deg\": " << h.beta / units::deg << ", \"base_helix_angle_deg\": " << h.beta_b / units::deg

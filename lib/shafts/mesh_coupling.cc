@@ -105,4 +105,20 @@ namespace gearfem::shafts
       }
     return out;
   }
+
+  std::vector<Eigen::Vector2d> mesh_axes_offset(const System &system, const Solution &solution,
+                                                const MeshLayout &mesh, const std::vector<double> &z)
+  {
+    const Frame f = frame(system, mesh);
+    const Eigen::Vector3d t(-f.e.y(), f.e.x(), 0); // z x e, whatever the drive sense
+    std::vector<Eigen::Vector2d> out;
+    for (const double zk : z)
+      {
+        const auto up = solution.along(system, mesh.pinion_shaft, mesh.pinion_face_start + zk);
+        const auto ug = solution.along(system, mesh.gear_shaft, mesh.gear_face_start + zk);
+        const Eigen::Vector3d d = Eigen::Vector3d(ug.head<3>()) - Eigen::Vector3d(up.head<3>());
+        out.emplace_back(d.dot(f.e), d.dot(t));
+      }
+    return out;
+  }
 } // namespace gearfem::shafts

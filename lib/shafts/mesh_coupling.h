@@ -52,4 +52,10 @@ namespace gearfem::shafts
   /// mesh_loads) from the shafts' solution.
   std::vector<double> mesh_approach(const System &system, const Solution &solution, const MeshLayout &mesh,
                                     const std::vector<double> &z);
+  /// The gear's axis relative to the pinion's at face positions `z` (as in mesh_loads), from
+  /// the shafts' solution [m]: its component along e (the centre distance's change; its
+  /// variation along the face is the in-plane axis deviation, ISO 1328's f_Sigma_delta) and
+  /// along t (perpendicular to the plane of the axes; its variation is f_Sigma_beta).
+  std::vector<Eigen::Vector2d> mesh_axes_offset(const System &system, const Solution &solution,
+                                                const MeshLayout &mesh, const std::vector<double> &z);
 } // namespace gearfem::shafts

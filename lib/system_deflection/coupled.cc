@@ -77,7 +77,7 @@ namespace gearfem::system_deflection
           cases.push_back(loads(f));
         }
     const auto sols = shafts::solve_cases(system_, cases);
-    A_.resize(N, N);
+    A_.resize(N, N), Ae_.resize(N, N), At_.resize(N, N);
     for (int c = 0; c < N; ++c)
       for (std::size_t m = 0; m < meshes_.size(); ++m)
         {
@@ -85,8 +85,9 @@ namespace gearfem::system_deflection
           for (const double z : z_[m])
             zf.push_back(z + 0.5 * meshes_[m].mesh.face_width);
           const auto d = shafts::mesh_approach(system_, sols[std::size_t(c)], meshes_[m].mesh, zf);
+          const auto o = shafts::mesh_axes_offset(system_, sols[std::size_t(c)], meshes_[m].mesh, zf);
           for (std::size_t k = 0; k < d.size(); ++k)
-            A_(first_[m] + int(k), c) = d[k];
+            A_(first_[m] + int(k), c) = d[k], Ae_(first_[m] + int(k), c) = o[k][0], At_(first_[m] + int(k), c) = o[k][1];
         }
   }
 
@@ -154,8 +155,12 @@ namespace gearfem::system_deflection
           }
         if (residual <= options_.tolerance)
           {
+            const Eigen::VectorXd oe = Ae_ * F, ot = At_ * F;
             for (std::size_t m = 0; m < M; ++m)
               {
+                const int n = int(z_[m].size());
+                r[m].axes_e.assign(oe.data() + first_[m], oe.data() + first_[m] + n);
+                r[m].axes_t.assign(ot.data() + first_[m], ot.data() + first_[m] + n);
                 r[m].helical = meshes_[m].pair->evaluate(solved[m]);
                 r[m].mismatch.assign(g.data() + first_[m], g.data() + first_[m] + int(z_[m].size()));
               }

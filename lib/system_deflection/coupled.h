@@ -40,6 +40,9 @@ namespace gearfem::system_deflection
     std::vector<double> approach;    ///< delta_k [m] (> 0: flanks pushed together)
     std::vector<double> mismatch;    ///< g_k [m], the gap offset the shafts add
     double mean_approach = 0;        ///< mean of delta over the face [m]
+    /// The gear's axis relative to the pinion's at each slice [m] (shafts::mesh_axes_offset):
+    /// along e (centre distance change) and along t (out of the plane of the axes).
+    std::vector<double> axes_e, axes_t;
     int iterations = 0;
     double residual = 0;             ///< last change of g [m]
   };
@@ -99,6 +102,7 @@ namespace gearfem::system_deflection
     std::vector<std::vector<double>> z_, dz_;
     std::vector<int> first_; ///< first row of each mesh in A_
     Eigen::MatrixXd A_;
+    Eigen::MatrixXd Ae_, At_; ///< influence on the axes' offset along e and t [m/N]
   };
 
   /// One pair on its two shafts: the train of one mesh, with the lead correction.

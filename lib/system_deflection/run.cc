@@ -5,6 +5,7 @@
 #include "base/errors.h"
 #include "base/progress.h"
 #include "base/units.h"
+#include "analytical/iso6336_stiffness.h"
 
 #include <chrono>
 #include <cmath>
@@ -86,20 +87,59 @@ namespace gearfem::system_deflection
           if (n > 0)
             run.shafts.push_back({T, pair->shafts_under(mean)});
         }
+    run.iso = method_c(section, o, run.coupled, run.helical.summary, run.corrected ? &run.design.correction : nullptr);
     return run;
   }
 
-  namespace
+  std::vector<MethodC> method_c(const solve::GearContactInput &section, const helical::SlicingOptions &o,
+                                const std::vector<CoupledResult> &coupled,
+                                const std::vector<helical::TorqueSummary> &summary, const LeadCorrection *correction)
   {
-    template <typename F>
-    void write(const std::filesystem::path &file, F &&body)
-    {
-      AtomicOutputFile f(file);
-      f.stream() << std::setprecision(10);
-      body(f.stream());
-      f.commit();
-    }
-  } // namespace
+    const auto &pair = *section.pair;
+    const auto &h    = o.helix;
+    const double b   = h.face_width;
+    // Method B in the normal section: the section's transverse shift and dedendum scaled back.
+    analytical::iso6336::StiffnessInput si;
+    si.z1 = pair.gear(1).teeth(), si.z2 = pair.gear(2).teeth();
+    const double to_n = h.m_t / h.m_n;
+    si.x1 = pair.gear(1).parameters().profile_shift * to_n, si.x2 = pair.gear(2).parameters().profile_shift * to_n;
+    si.h_fP1 = pair.gear(1).parameters().rack.dedendum * to_n, si.h_fP2 = pair.gear(2).parameters().rack.dedendum * to_n;
+    si.beta = h.beta, si.alpha_n = h.alpha_n, si.module = h.m_n;
+    si.eps_alpha = pair.contact_ratio(), si.eps_beta = h.overlap_ratio;
+    std::vector<MethodC> out;
+    for (const auto &t : summary)
+      {
+        MethodC m;
+        m.torque           = t.torque;
+        m.k_h_beta_coupled = t.k_h_beta;
+        for (const auto &c : coupled)
+          if (c.helical.torque == t.torque)
+            {
+              double lo = 1e300, hi = -1e300;
+              for (std::size_t k = 0; k < c.mismatch.size(); ++k)
+                {
+                  const double g = c.mismatch[k] + (correction ? correction->at(c.z[k], b) : 0.0);
+                  lo = std::min(lo, g), hi = std::max(hi, g);
+                }
+              m.f_beta_y = std::max(m.f_beta_y, hi - lo);
+            }
+        const double Ft = t.torque / (0.5 * pair.gear(1).teeth() * h.m_t);
+        m.line_load     = Ft / b * 1e-3;
+        si.load_per_width = Ft / b;
+        try
+          {
+            m.c_gamma_beta = analytical::iso6336::mesh_stiffness(si).c_gamma_beta;
+            m.k_h_beta     = analytical::iso6336::face_load_factor_method_c(m.f_beta_y / units::um, m.c_gamma_beta,
+                                                                            m.line_load);
+          }
+        catch (const InputError &)
+          {
+            m.c_gamma_beta = m.k_h_beta = 0;
+          }
+        out.push_back(m);
+      }
+    return out;
+  }
 
   CoupledResult mean_at(const std::vector<CoupledResult> &results, double torque, int &n)
   {
@@ -125,8 +165,9 @@ namespace gearfem::system_deflection
     const bool staged = !meshes.empty() && meshes.front().stage > 0;
     const std::string col = staged ? "stage," : "";
     const auto stage = [&](const MeshTables &m) { return staged ? std::to_string(m.stage) + "," : std::string(); };
-    write(dir / "coupling.csv", [&](std::ostream &s) {
-      s << col << "position,torque_Nm,k_h_beta,iterations,residual_um,mean_approach_um,mismatch_max_um\n";
+    write_atomically(dir / "coupling.csv", [&](std::ostream &s) {
+      s << col << "position,torque_Nm,k_h_beta,iterations,residual_um,mean_approach_um,mismatch_max_um,"
+                  "centre_distance_change_um,f_sigma_delta_um,f_sigma_beta_um\n";
       for (const auto &m : meshes)
         for (std::size_t i = 0; i < m.coupled->size(); ++i)
           {
@@ -134,12 +175,19 @@ namespace gearfem::system_deflection
             double g = 0;
             for (const double v : c.mismatch)
               g = std::max(g, v);
+            const auto span = [](const std::vector<double> &v) {
+              return v.empty() ? 0.0 : v.back() - v.front(); // over the slice centres, signed
+            };
+            double a = 0;
+            for (const double v : c.axes_e)
+              a += v / double(c.axes_e.size());
             s << stage(m) << i % m.grid << ',' << c.helical.torque << ',' << c.helical.k_h_beta << ',' << c.iterations
-              << ',' << c.residual / units::um << ',' << c.mean_approach / units::um << ',' << g / units::um << '\n';
+              << ',' << c.residual / units::um << ',' << c.mean_approach / units::um << ',' << g / units::um << ','
+              << a / units::um << ',' << span(c.axes_e) / units::um << ',' << span(c.axes_t) / units::um << '\n';
           }
     });
-    write(dir / "misalignment.csv", [&](std::ostream &s) {
-      s << col << "position,torque_Nm,slice,z_mm,force_N,approach_um,mismatch_um\n";
+    write_atomically(dir / "misalignment.csv", [&](std::ostream &s) {
+      s << col << "position,torque_Nm,slice,z_mm,force_N,approach_um,mismatch_um,axes_e_um,axes_t_um\n";
       for (const auto &m : meshes)
         for (std::size_t i = 0; i < m.coupled->size(); ++i)
           {
@@ -147,10 +195,10 @@ namespace gearfem::system_deflection
             for (std::size_t k = 0; k < c.z.size(); ++k)
               s << stage(m) << i % m.grid << ',' << c.helical.torque << ',' << k << ',' << c.z[k] / units::mm << ','
                 << c.helical.slices[k].force << ',' << c.approach[k] / units::um << ',' << c.mismatch[k] / units::um
-                << '\n';
+                << ',' << c.axes_e[k] / units::um << ',' << c.axes_t[k] / units::um << '\n';
           }
     });
-    write(dir / "shafts.csv", [&](std::ostream &s) {
+    write_atomically(dir / "shafts.csv", [&](std::ostream &s) {
       s << "torque_Nm,shaft,z_mm,u_x_um,u_y_um,u_z_um,theta_x_mrad,theta_y_mrad,theta_z_mrad\n";
       for (const auto &t : shafts)
         for (const auto &n : t.solution.nodes)
@@ -158,7 +206,7 @@ namespace gearfem::system_deflection
             << n.u[1] / units::um << ',' << n.u[2] / units::um << ',' << n.u[3] * 1e3 << ',' << n.u[4] * 1e3 << ','
             << n.u[5] * 1e3 << '\n';
     });
-    write(dir / "bearings.csv", [&](std::ostream &s) {
+    write_atomically(dir / "bearings.csv", [&](std::ostream &s) {
       s << "torque_Nm,bearing,shaft,z_mm,F_x_N,F_y_N,F_z_N,M_x_Nm,M_y_Nm,M_z_Nm\n";
       for (const auto &t : shafts)
         for (std::size_t i = 0; i < t.solution.reactions.size(); ++i)
@@ -172,12 +220,23 @@ namespace gearfem::system_deflection
     });
   }
 
+  void write_method_c(std::ostream &s, const std::vector<MethodC> &iso)
+  {
+    for (std::size_t i = 0; i < iso.size(); ++i)
+      {
+        const auto &m = iso[i];
+        s << (i ? ", " : "") << "{\"torque_Nm\": " << m.torque << ", \"k_h_beta\": " << m.k_h_beta_coupled
+          << ", \"f_beta_y_um\": " << m.f_beta_y / units::um << ", \"line_load_N_per_mm\": " << m.line_load
+          << ", \"c_gamma_beta_iso\": " << m.c_gamma_beta << ", \"k_h_beta_iso_method_c\": " << m.k_h_beta << "}";
+      }
+  }
+
   void write_coupled(const CoupledRun &run, const std::filesystem::path &dir, const std::string &input_name)
   {
     helical::write_helical(run.helical, dir, input_name);
     write_shaft_tables({MeshTables{0, std::size_t(run.helical.options.grid.size), &run.coupled}}, run.shafts, run.system,
                        dir);
-    write(dir / "system.json", [&](std::ostream &s) {
+    write_atomically(dir / "system.json", [&](std::ostream &s) {
       const auto &m = run.mesh;
       s << "{\n  \"input\": \"" << input_name << "\",\n  \"centre_distance_mm\": " << run.system.shafts[1].x / units::mm
         << ",\n  \"pinion_face_start_mm\": " << m.pinion_face_start / units::mm
@@ -191,7 +250,9 @@ namespace gearfem::system_deflection
           << ", \"correction_crowning_um\": " << run.design.correction.crowning / units::um
           << ", \"correction_iterations\": " << run.design.iterations
           << ", \"correction_seconds\": " << run.design_seconds;
-      s << ",\n  \"sweep_seconds\": " << run.helical.sweep_seconds << "\n}\n";
+      s << ",\n  \"sweep_seconds\": " << run.helical.sweep_seconds << ",\n  \"torques\": [";
+      write_method_c(s, run.iso);
+      s << "]\n}\n";
     });
   }
 } // namespace gearfem::system_deflection

@@ -37,6 +37,25 @@ namespace gearfem::system_deflection
   /// off its shaft).
   SystemInput parse_system_parameters(dealii::ParameterHandler &prm);
 
+  /// ISO 6336-1:2006 method C beside the coupled solution at one torque: K_Hbeta from the
+  /// mismatch the shafts give plus the lead correction when there is one (F_beta_y the largest
+  /// span of that sum over the face in the cycle, no running-in allowance; the input's other
+  /// lead modifications left out) with method B's c_gamma_beta of the pair, F_m/b = F_t/b.
+  struct MethodC
+  {
+    double torque = 0;        ///< pinion torque [N m]
+    double f_beta_y = 0;      ///< [m]
+    double c_gamma_beta = 0;  ///< [N/(mm um)] (0: method B does not cover the pair)
+    double line_load = 0;     ///< F_t / b [N/mm]
+    double k_h_beta = 0;      ///< method C (0 when c_gamma_beta is 0)
+    double k_h_beta_coupled = 0; ///< the coupled solution's, largest over the cycle
+  };
+  /// Per torque of `summary`, from the coupled results of the sweep.
+  std::vector<MethodC> method_c(const solve::GearContactInput &section, const helical::SlicingOptions &o,
+                                const std::vector<CoupledResult> &coupled,
+                                const std::vector<helical::TorqueSummary> &summary,
+                                const LeadCorrection *correction = nullptr);
+
   struct TorqueShafts
   {
     double torque = 0;
@@ -51,6 +70,7 @@ namespace gearfem::system_deflection
     DesignedCorrection design;          ///< when corrected
     double design_seconds = 0;
     std::vector<TorqueShafts> shafts;   ///< per torque
+    std::vector<MethodC> iso;           ///< per torque
     shafts::System system;              ///< as solved (the gear axis placed)
     shafts::MeshLayout mesh;            ///< as solved
   };

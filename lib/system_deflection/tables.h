@@ -27,4 +27,6 @@ namespace gearfem::system_deflection
   /// stages of a train.
   void write_shaft_tables(const std::vector<MeshTables> &meshes, const std::vector<TorqueShafts> &shafts,
                           const shafts::System &system, const std::filesystem::path &dir);
+  /// The per-torque method C objects of system.json (without the brackets).
+  void write_method_c(std::ostream &s, const std::vector<MethodC> &iso);
 } // namespace gearfem::system_deflection

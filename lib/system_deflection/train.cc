@@ -145,6 +145,9 @@ namespace gearfem::system_deflection
           s.c_gamma = s.k_mean / h.helix.face_width;
         h.sweep_seconds = run.sweep_seconds;
       }
+    for (std::size_t k = 0; k < S; ++k)
+      run.iso.push_back(method_c(in.stages[k].request.section, run.stages[k].options, run.coupled[k],
+                                 run.stages[k].summary));
     // Per input torque: the shafts under every stage's mean slice forces.
     for (std::size_t t = 0; t < in.torques.size(); ++t)
       {
@@ -190,7 +193,9 @@ namespace gearfem::system_deflection
           << ", \"gear_face_start_mm\": " << m.gear_face_start / units::mm
           << ", \"pitch_radius_1_mm\": " << m.pitch_radius_1 / units::mm << ", \"drive_sense\": " << m.drive_sense
           << ", \"face_width_mm\": " << m.face_width / units::mm << ", \"alpha_wt_deg\": " << m.alpha_wt / units::deg
-          << ", \"beta_b_deg\": " << m.beta_b / units::deg << "}";
+          << ", \"beta_b_deg\": " << m.beta_b / units::deg << ",\n     \"torques\": [";
+        write_method_c(s, run.iso[k]);
+        s << "]}";
       }
     s << "\n  ],\n  \"sweep_seconds\": " << run.sweep_seconds << ", \"solved\": " << run.coupled.front().size()
       << ", \"failure\": \"" << (run.failure.empty() ? "" : "see the console") << "\"\n}\n";

@@ -49,6 +49,7 @@ namespace gearfem::system_deflection
     std::vector<helical::HelicalRun> stages;          ///< per stage: its results and summary
     std::vector<std::vector<CoupledResult>> coupled;  ///< per stage, parallel to stages[k].results
     std::vector<TorqueShafts> shafts;                 ///< per input torque, under the mean slice forces
+    std::vector<std::vector<MethodC>> iso;            ///< per stage and torque
     std::vector<double> ratio;                        ///< per stage: its pinion torque / the input torque
     shafts::System system;                            ///< as solved (the shafts placed)
     std::vector<shafts::MeshLayout> meshes;           ///< per stage, as solved

@@ -322,6 +322,15 @@ def main():
             c.info("gearfem's largest mismatch over the face / the pinion shaft's linear part (closed form)",
                    f"{gmax / f_beam:.3f}", "—", "gearfem adds the gear shaft and the curvature of the deflection "
                    "line under the face; its mismatch spans the slice centres")
+    # gearfem's own method C beside the coupled K_Hbeta (system.json), recomputed here from its
+    # F_beta_y with iso_reference.py's c_gamma_beta.
+    for t in sysj["torques"]:
+        F_mb = 2 * t["torque_Nm"] / g["d1"] / b * 1e-3
+        c.rel(f"gearfem's c_gamma_beta (method B) at {t['torque_Nm']:g} N m", t["c_gamma_beta_iso"],
+              st["c_gamma_beta"], 1e-6, "ISO 6336-1:2006 clause 9 (iso_reference.py)")
+        c.rel(f"gearfem's method C K_Hbeta from its F_beta_y {t['f_beta_y_um']:.3g} um at {t['torque_Nm']:g} N m",
+              t["k_h_beta_iso_method_c"], iso.k_h_beta_method_c(t["f_beta_y_um"], st["c_gamma_beta"], F_mb), 1e-6,
+              ISO_C.split(": F_bx")[0])
     for T in (200.0, 800.0):
         c.info(f"K_Hbeta on the shafts at {T:g} N m / at 400 N m", f"{k_at(run['straddle_uncorrected'], T) / k_at(run['straddle_uncorrected'], 400.0):.4f}",
                "—", "f_sh and the line load both scale with the torque: only the Hertz part moves it")
