@@ -177,6 +177,20 @@ TEST(Iso6336_1, HelicalStiffnessOfIsoTr6336_30Example1)
   EXPECT_NEAR(s.c_gamma_alpha / 17.46485, 1.0, 2e-4);
 }
 
+TEST(Iso6336_1, FaceLoadFactorMethodC)
+{
+  // ISO 6336-1:2006 clause 7 (method C): K = 1 + F_by c_gb / (2 F_m/b) up to 2, above it
+  // sqrt(2 F_by c_gb / (F_m/b)); the two branches meet at 2 (r = 2). Hand values.
+  using gearfem::analytical::iso6336::face_load_factor_method_c;
+  EXPECT_NEAR(face_load_factor_method_c(10, 14, 200), 1.35, 1e-14);
+  EXPECT_NEAR(face_load_factor_method_c(100, 20, 200), std::sqrt(20.0), 1e-14);
+  EXPECT_NEAR(face_load_factor_method_c(20, 20, 200), 2.0, 1e-14);
+  EXPECT_NEAR(face_load_factor_method_c(20 * (1 + 1e-12), 20, 200), 2.0, 1e-10);
+  EXPECT_EQ(face_load_factor_method_c(0, 20, 200), 1.0);
+  EXPECT_THROW(face_load_factor_method_c(10, 20, 0), gearfem::InputError);
+  EXPECT_THROW(face_load_factor_method_c(-1, 20, 200), gearfem::InputError);
+}
+
 TEST(Iso6336_1, ShiftDependenceOfSingleStiffness)
 {
   // q' (ISO 6336-1 eq. 71): positive shift on the pinion stiffens the pair (dq'/dx1 =
