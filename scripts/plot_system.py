@@ -9,7 +9,6 @@ mismatch the shafts give along the face (mean over the cycle) per torque and sta
 temporary name and renamed into place. Exit 1 with a one-line message when a table is missing or
 unreadable.
 """
-import csv
 import math
 import os
 import sys
@@ -20,19 +19,13 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def table(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        raise ValueError("no rows")
-    return rows
+from plot_helical import table  # noqa: E402  (the same tables' reader)
 
 
 def main(argv):
     if len(argv) != 2 or argv[1] in ("-h", "--help"):
-        print(__doc__)
-        return 0 if len(argv) == 2 else 1
+        print(__doc__.strip())
+        return 0 if len(argv) == 2 else 2
     d = argv[1]
     try:
         shafts = table(os.path.join(d, "shafts.csv"))

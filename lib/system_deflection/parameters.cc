@@ -9,6 +9,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+
 namespace gearfem::system_deflection
 {
   namespace
@@ -72,7 +74,9 @@ namespace gearfem::system_deflection
                              "comma-separated bearings z:radial:axial:tilting:torsional (mm, N/um, N/um, N m/mrad, "
                              "N m/rad; rigid or a number >= 0)");
           shafts::Bearing b;
-          b.name      = bearing_prefix + " bearing " + std::to_string(bearings.size() + 1);
+          b.name      = bearing_prefix + " bearing " +
+                   std::to_string(1 + std::count_if(bearings.begin(), bearings.end(),
+                                                    [&](const shafts::Bearing &o) { return o.shaft == i; }));
           b.shaft     = i;
           b.z         = parse_double(brg_entry, f[0], 0.0, 1e5) * units::mm;
           b.radial    = stiffness(brg_entry, f[1], 1e6);
