@@ -260,25 +260,39 @@ namespace gearfem::system_deflection
     if (phi1.empty())
       throw InputError("lead correction", "no positions", "at least one position of the cycle");
     DesignedCorrection d;
+    // The fixed point c = correction(c), Aitken-relaxed like the coupling itself; each position
+    // starts from its own mismatch of the previous correction.
+    std::vector<std::vector<double>> warm(phi1.size());
+    Eigen::Vector2d prev_step(0, 0);
+    double omega = 1;
     for (int n = 1;; ++n)
       {
         const auto with = pair.corrected(lead, d.correction);
         d.results.clear();
-        std::vector<double> start;
-        for (const double phi : phi1)
+        for (std::size_t p = 0; p < phi1.size(); ++p)
           {
-            d.results.push_back(pair.solve(phi, torque, with, start));
-            start = d.results.back().mismatch;
+            const auto &start = !warm[p].empty() ? warm[p] : (p > 0 ? warm[p - 1] : warm[p]);
+            d.results.push_back(pair.solve(phi1[p], torque, with, start));
+            warm[p] = d.results.back().mismatch;
           }
         const LeadCorrection next = pair.correction(d.results);
         d.iterations = n;
-        d.change     = std::max(std::abs(next.slope - d.correction.slope), std::abs(next.crowning - d.correction.crowning));
+        const Eigen::Vector2d step(next.slope - d.correction.slope, next.crowning - d.correction.crowning);
+        d.change = step.cwiseAbs().maxCoeff();
         if (d.change <= tolerance)
           return d;
         if (n == 20)
           throw SolverError("lead correction at " + to_string_g(torque) + " N m: slope and crowning did not settle in 20 "
                             "corrections (last change " + to_string_g(d.change / units::um) + " um)");
-        d.correction = next;
+        if (n > 1)
+          {
+            const Eigen::Vector2d dd = step - prev_step;
+            if (dd.squaredNorm() > 0)
+              omega = std::clamp(-omega * prev_step.dot(dd) / dd.squaredNorm(), 0.05, 2.0);
+          }
+        prev_step = step;
+        d.correction.slope += omega * step[0];
+        d.correction.crowning += omega * step[1];
       }
   }
 } // namespace gearfem::system_deflection
