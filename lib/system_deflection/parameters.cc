@@ -69,10 +69,10 @@ namespace gearfem::system_deflection
         throw InputError(seg_entry, "(none)", "at least one segment length:outer diameter[:bore] in mm");
       for (const auto &f : items(prm.get("Bearings")))
         {
-          if (f.size() != 5)
+          if (f.size() != 5 && f.size() != 7)
             throw InputError(brg_entry, prm.get("Bearings"),
-                             "comma-separated bearings z:radial:axial:tilting:torsional (mm, N/um, N/um, N m/mrad, "
-                             "N m/rad; rigid or a number >= 0)");
+                             "comma-separated bearings z:radial:axial:tilting:torsional[:housing radial:housing axial] "
+                             "(mm, N/um, N/um, N m/mrad, N m/rad, N/um, N/um; rigid or a number >= 0)");
           shafts::Bearing b;
           b.name      = bearing_prefix + " bearing " +
                    std::to_string(1 + std::count_if(bearings.begin(), bearings.end(),
@@ -83,6 +83,15 @@ namespace gearfem::system_deflection
           b.axial     = stiffness(brg_entry, f[2], 1e6);
           b.tilting   = stiffness(brg_entry, f[3], 1e3);
           b.torsional = stiffness(brg_entry, f[4], 1.0);
+          if (f.size() == 7)
+            {
+              // The housing's seat in series with the bearing (diagonal: radial and axial).
+              const auto series = [](double k, double h) { return k == shafts::rigid ? h : h == shafts::rigid ? k : k * h / (k + h); };
+              const double hr = stiffness(brg_entry, f[5], 1e6), ha = stiffness(brg_entry, f[6], 1e6);
+              if (!(hr > 0) || !(ha > 0))
+                throw InputError(brg_entry, f[5] + ":" + f[6], "housing stiffnesses > 0 N/um (or rigid)");
+              b.radial = series(b.radial, hr), b.axial = b.axial > 0 ? series(b.axial, ha) : 0.0;
+            }
           bearings.push_back(b);
         }
       prm.leave_subsection();
@@ -103,10 +112,12 @@ namespace gearfem::system_deflection
                       "gear on a hub). Units: mm. Allowed: lengths and diameters > 0, bore below the outer "
                       "diameter.");
     prm.declare_entry("Bearings", "", Anything(),
-                      "Comma-separated bearings z:radial:axial:tilting:torsional: the position from the "
-                      "shaft's start and the spring of each (rigid, or a number; 0 leaves it free). The "
-                      "torsional spring at the input (pinion) or output (gear) coupling holds the torque. "
-                      "Units: mm, N/um, N/um, N m/mrad, N m/rad.");
+                      "Comma-separated bearings z:radial:axial:tilting:torsional[:housing radial:housing axial]: "
+                      "the position from the shaft's start and the spring of each (rigid, or a number; 0 leaves "
+                      "it free). The torsional spring at the input (pinion) or output (gear) coupling holds the "
+                      "torque. The optional housing stiffnesses of the seat act in series with the bearing's "
+                      "radial and axial springs (rigid housing when left out). Units: mm, N/um, N/um, N m/mrad, "
+                      "N m/rad, N/um, N/um.");
     prm.declare_entry("Young's modulus", "206000", Double(), "Units: MPa. Allowed: > 0.");
     prm.declare_entry("Poisson's ratio", "0.3", Double(), "Units: none. Allowed: -1 to 0.5.");
   }

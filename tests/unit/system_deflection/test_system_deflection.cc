@@ -15,6 +15,7 @@
 #include "helical/slicing.h"
 #include "solve/input.h"
 #include "system_deflection/coupled.h"
+#include "system_deflection/run.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -227,4 +228,42 @@ TEST(SystemDeflection, TrainOfTwoPairsOnSeparateShaftsIsEachPairAlone)
       const Eigen::Vector3d R = s.reactions[first].force + s.reactions[first + 1].force;
       EXPECT_NEAR(R.norm(), T / b.in.pair->base_radius(1), 1e-9 * T / b.in.pair->base_radius(1));
     }
+}
+
+TEST(SystemDeflection, HousingStiffnessActsInSeriesWithTheBearing)
+{
+  // Bearings z:radial:axial:tilting:torsional:housing radial:housing axial: the seat's springs in
+  // series, 1/k = 1/k_bearing + 1/k_housing (a rigid side leaves the other).
+  dealii::ParameterHandler prm;
+  system_deflection::declare_system_parameters(prm);
+  prm.parse_input_from_string(R"(
+subsection System
+  set Coupling = shafts
+  subsection Pinion shaft
+    set Segments = 100:40
+    set Bearings = 0:rigid:rigid:0:rigid:500:rigid, 100:1000:0:0:0:1000:250
+  end
+  subsection Gear shaft
+    set Segments = 100:60
+    set Bearings = 0:rigid:rigid:0:0, 100:rigid:0:0:rigid
+  end
+end
+)");
+  const auto s = system_deflection::parse_system_parameters(prm);
+  ASSERT_EQ(s.system.bearings.size(), 4u);
+  const auto &b = s.system.bearings;
+  EXPECT_DOUBLE_EQ(b[0].radial, 500e6);         // rigid bearing on a 500 N/um seat
+  EXPECT_EQ(b[0].axial, shafts::rigid);          // rigid on rigid
+  EXPECT_DOUBLE_EQ(b[1].radial, 500e6);         // 1000 and 1000 N/um in series
+  EXPECT_EQ(b[1].axial, 0.0);                    // a floating bearing stays free
+  EXPECT_EQ(b[0].name, "pinion bearing 1");
+  EXPECT_EQ(b[2].name, "gear bearing 1");        // numbered per shaft
+  prm.parse_input_from_string(R"(
+subsection System
+  subsection Pinion shaft
+    set Bearings = 0:rigid:rigid:0:rigid:0:rigid, 100:rigid:0:0:0
+  end
+end
+)");
+  EXPECT_THROW(system_deflection::parse_system_parameters(prm), InputError);
 }
