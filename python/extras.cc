@@ -12,6 +12,7 @@
 #include "dynamics/parameters.h"
 #include "dynamics/report.h"
 #include "helical/run.h"
+#include "system_deflection/run.h"
 #include "rating/parameters.h"
 #include "rating/rating.h"
 #include "route/route.h"
@@ -123,28 +124,33 @@ namespace gearfem::python
       return out;
     }
 
-    /// The helical pair of the input (Helical section): per torque the summary of `gearfem helical`.
+    /// The helical pair of the input (Helical section; on its shafts with System/Coupling =
+    /// shafts): per torque the summary of `gearfem helical`.
     py::list helical_run(const Input &in, const py::object &progress)
     {
       dealii::ParameterHandler prm;
       helical::declare_request(prm);
+      system_deflection::declare_system_parameters(prm);
       parse(in, prm);
       helical::Request req = helical::parse_request(prm);
+      const system_deflection::SystemInput sys = system_deflection::parse_system_parameters(prm);
       const solve::GearContactInput &s = req.section;
       const helical::SlicingOptions &o = req.slicing;
       helical::RunOptions &ro          = req.run;
       ProgressStream stream(progress);
       ro.out = stream.get();
-      helical::HelicalRun r;
+      system_deflection::CoupledRun job;
       {
         py::gil_scoped_release release;
-        r = helical::run_helical(s, o, ro);
+        job = system_deflection::run_job(s, o, ro, sys);
       }
+      const helical::HelicalRun &r = job.helical;
       if (!r.failure.empty())
         throw SolverError(r.failure);
       py::list out;
-      for (const auto &t : r.summary)
+      for (std::size_t i = 0; i < r.summary.size(); ++i)
         {
+          const auto &t = r.summary[i];
           py::dict d;
           d["torque [N m]"]              = t.torque;
           d["STE mean [um]"]             = t.ste_mean / units::um;
@@ -155,6 +161,17 @@ namespace gearfem::python
           d["p_max [MPa]"]               = t.p_max / 1e6;
           d["root stress pinion [MPa]"]  = t.root_stress_pinion / 1e6;
           d["root stress gear [MPa]"]    = t.root_stress_gear / 1e6;
+          if (sys.coupled && i < job.iso.size())
+            {
+              // On the shafts: ISO 6336-1 method C beside, and the lead correction when designed.
+              d["F_beta_y [um]"]           = job.iso[i].f_beta_y / units::um;
+              d["K_Hbeta ISO method C"]    = job.iso[i].k_h_beta;
+              if (job.corrected)
+                {
+                  d["correction slope [um]"]    = job.design.correction.slope / units::um;
+                  d["correction crowning [um]"] = job.design.correction.crowning / units::um;
+                }
+            }
           out.append(d);
         }
       return out;

@@ -48,17 +48,8 @@ namespace gearfem::commands
         return;
       if (ctx.condensed.empty())
         ro.write_cycle = ctx.output_dir / condensed::file_name;
-      system_deflection::CoupledRun coupled;
-      if (sys.coupled)
-        {
-          coupled = system_deflection::run_coupled(in, o, ro, sys);
-          system_deflection::write_coupled(coupled, ctx.output_dir, ctx.input_file.filename().string());
-        }
-      else
-        {
-          coupled.helical = helical::run_helical(in, o, ro);
-          helical::write_helical(coupled.helical, ctx.output_dir, ctx.input_file.filename().string());
-        }
+      const system_deflection::CoupledRun coupled = system_deflection::run_job(in, o, ro, sys);
+      system_deflection::write_job(coupled, sys.coupled, ctx.output_dir, ctx.input_file.filename().string());
       const helical::HelicalRun &r = coupled.helical;
       out << std::setprecision(5);
       for (const auto &t : r.summary)

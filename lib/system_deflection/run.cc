@@ -91,6 +91,24 @@ namespace gearfem::system_deflection
     return run;
   }
 
+  CoupledRun run_job(const solve::GearContactInput &section, const helical::SlicingOptions &o, helical::RunOptions ro,
+                     const SystemInput &sys)
+  {
+    if (sys.coupled)
+      return run_coupled(section, o, std::move(ro), sys);
+    CoupledRun run;
+    run.helical = helical::run_helical(section, o, ro);
+    return run;
+  }
+
+  void write_job(const CoupledRun &run, bool coupled, const std::filesystem::path &dir, const std::string &input_name)
+  {
+    if (coupled)
+      write_coupled(run, dir, input_name);
+    else
+      helical::write_helical(run.helical, dir, input_name);
+  }
+
   std::vector<MethodC> method_c(const solve::GearContactInput &section, const helical::SlicingOptions &o,
                                 const std::vector<CoupledResult> &coupled,
                                 const std::vector<helical::TorqueSummary> &summary, const LeadCorrection *correction)

@@ -83,6 +83,15 @@ namespace gearfem::system_deflection
   CoupledRun run_coupled(const solve::GearContactInput &section, const helical::SlicingOptions &o,
                          helical::RunOptions ro, SystemInput sys);
 
+  /// The `gearfem helical` job: on the shafts of `sys` when it is coupled (run_coupled), else the
+  /// slicing alone on rigid, aligned axes (helical::run_helical; `coupled` empty). The one route
+  /// decision of the CLI and the Python module.
+  CoupledRun run_job(const solve::GearContactInput &section, const helical::SlicingOptions &o, helical::RunOptions ro,
+                     const SystemInput &sys);
+
+  /// The tables of a job: write_coupled when it ran on the shafts, else helical::write_helical.
+  void write_job(const CoupledRun &run, bool coupled, const std::filesystem::path &dir, const std::string &input_name);
+
   /// The helical tables (helical::write_helical) and coupling.csv, misalignment.csv,
   /// shafts.csv, bearings.csv and system.json, each written atomically into `dir`.
   void write_coupled(const CoupledRun &run, const std::filesystem::path &dir, const std::string &input_name);

@@ -177,3 +177,30 @@ def test_kinematics_draws_and_ratings(study):
     assert not np.array_equal(f0, d1["gear 1"]["f_pt [um]"])
     rating = gearfem.rate(study)
     assert len(rating["torques [N m]"]) >= 1
+
+
+def test_helical_on_its_shafts_equals_the_cli(tmp_path):
+    # gearfem.helical takes the route `gearfem helical` takes (system_deflection::run_job): on
+    # the shafts with System/Coupling = shafts. Reference: the CLI's helical.json and system.json
+    # of the same input (10 significant digits).
+    import json
+    case = os.path.join(SRC, "inputs", "system_overhung.prm")
+    prm = tmp_path / "case.prm"
+    prm.write_text(open(case).read() + (
+        "subsection Solve\n  set Number of positions = 8\n  set Torques = 100, 200\n  set Plots = false\nend\n"))
+    out = tmp_path / "cli"
+    cli("helical", str(prm), "--output-dir", str(out))
+    with open(out / "helical.json") as f:
+        ref = {t["torque_Nm"]: t for t in json.load(f)["torques"]}
+    with open(out / "system.json") as f:
+        sysj = json.load(f)
+    iso = {t["torque_Nm"]: t for t in sysj["torques"]}
+    res = gearfem.helical(gearfem.read_input(str(prm)))
+    assert [r["torque [N m]"] for r in res] == [100.0, 200.0]
+    for r in res:
+        T = r["torque [N m]"]
+        assert abs(r["K_Hbeta"] / ref[T]["k_h_beta"] - 1) < 1e-9
+        assert abs(r["STE mean [um]"] / ref[T]["ste_mean_um"] - 1) < 1e-9
+        assert abs(r["K_Hbeta ISO method C"] / iso[T]["k_h_beta_iso_method_c"] - 1) < 1e-9
+        assert abs(r["correction slope [um]"] / sysj["correction_slope_um"] - 1) < 1e-9
+        assert r["K_Hbeta"] > 1.0  # the shafts bend: not the aligned face
