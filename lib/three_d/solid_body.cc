@@ -1,0 +1,169 @@
+#include "three_d/solid_body.h"
+
+#include "base/errors.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+
+namespace gearfem::three_d
+{
+  void ExtrusionOptions::validate() const
+  {
+    require_greater("3-D/Face width", face_width, 0.0, "m");
+    if (layers < 1 || layers > 400)
+      throw InputError("3-D/Layers", std::to_string(layers), "1 to 400");
+    if (degree != 1 && degree != 2)
+      throw InputError("3-D/Degree", std::to_string(degree), "1 or 2");
+  }
+
+  SolidBody::SolidBody(const dealii::Triangulation<2> &section, const fem::Elasticity &material,
+                       const ExtrusionOptions &options)
+    : material_(material), options_(options), fe_(dealii::FE_Q<3>(options.degree), 3)
+  {
+    options_.validate();
+    material_.validate();
+    if (section.n_levels() > 1)
+      throw InputError("3-D section", std::to_string(section.n_levels() - 1) + " refinements",
+                       "an unrefined section mesh (deal.II extrudes coarse meshes only)");
+    // deal.II counts the planes of vertices: layers + 1 of them.
+    dealii::GridGenerator::extrude_triangulation(section, unsigned(options_.layers + 1), options_.face_width, tria_);
+    // The end faces take the two ids after the largest of the section (deal.II's rule).
+    dealii::types::boundary_id top = 0;
+    for (const auto id : section.get_boundary_ids())
+      top = std::max(top, id);
+    end_start_ = dealii::types::boundary_id(top + 1), end_finish_ = dealii::types::boundary_id(top + 2);
+    dof_handler_.reinit(tria_);
+    dof_handler_.distribute_dofs(fe_);
+  }
+
+  SolidBody::~SolidBody() = default;
+
+  void SolidBody::constrain(dealii::types::boundary_id id) { clamped_.insert(id); }
+
+  void SolidBody::assemble_and_factorize()
+  {
+    if (clamped_.empty())
+      throw SolverError("3-D body: no clamped boundary (the stiffness is singular)");
+    dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+    dealii::DoFTools::make_sparsity_pattern(dof_handler_, dsp);
+    sparsity_.copy_from(dsp);
+    stiffness_.reinit(sparsity_);
+    const double E = material_.youngs_modulus, nu = material_.poisson_ratio;
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    const dealii::QGauss<3> quad(options_.degree + 1);
+    dealii::FEValues<3> fv(fe_, quad, dealii::update_gradients | dealii::update_JxW_values);
+    const unsigned n = fe_.n_dofs_per_cell();
+    dealii::FullMatrix<double> Ke(n, n);
+    std::vector<dealii::types::global_dof_index> dofs(n);
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        fv.reinit(cell);
+        Ke = 0;
+        for (unsigned q = 0; q < quad.size(); ++q)
+          for (unsigned i = 0; i < n; ++i)
+            {
+              const unsigned ci = fe_.system_to_component_index(i).first;
+              const auto gi     = fv.shape_grad(i, q);
+              for (unsigned j = 0; j < n; ++j)
+                {
+                  const unsigned cj = fe_.system_to_component_index(j).first;
+                  const auto gj     = fv.shape_grad(j, q);
+                  // lambda div div + mu (grad + grad^T) : grad, componentwise (step-8).
+                  Ke(i, j) += (gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu + (ci == cj ? gi * gj * mu : 0.0)) *
+                              fv.JxW(q);
+                }
+            }
+        cell->get_dof_indices(dofs);
+        for (unsigned i = 0; i < n; ++i)
+          for (unsigned j = 0; j < n; ++j)
+            stiffness_.add(dofs[i], dofs[j], Ke(i, j));
+      }
+    // Clamped DoFs: identity rows and columns (homogeneous data, the system stays symmetric).
+    std::map<dealii::types::global_dof_index, double> zero;
+    for (const auto id : clamped_)
+      dealii::VectorTools::interpolate_boundary_values(dealii::MappingQ1<3>(), dof_handler_, id,
+                                                       dealii::Functions::ZeroFunction<3>(3), zero);
+    if (zero.empty())
+      throw SolverError("3-D body: the clamped boundaries hold no DoF");
+    constrained_.assign(dof_handler_.n_dofs(), false);
+    for (const auto &[d, v] : zero)
+      constrained_[d] = v == 0.0; // all zero: homogeneous data
+    double diag = 0; // a typical diagonal entry keeps the eliminated rows well scaled
+    for (unsigned r = 0; r < stiffness_.m(); ++r)
+      diag += std::abs(stiffness_.diag_element(r)) / double(stiffness_.m());
+    for (unsigned r = 0; r < stiffness_.m(); ++r)
+      for (auto it = stiffness_.begin(r); it != stiffness_.end(r); ++it)
+        if (constrained_[r] || constrained_[it->column()])
+          it->value() = (r == it->column()) ? diag : 0.0;
+    solver_.initialize(stiffness_);
+  }
+
+  dealii::Vector<double> SolidBody::traction_load(const Tensor3 &t, const std::set<dealii::types::boundary_id> &ids,
+                                                  const std::function<bool(const Point3 &)> &where) const
+  {
+    const dealii::QGauss<2> quad(options_.degree + 1);
+    dealii::FEFaceValues<3> fv(fe_, quad, dealii::update_values | dealii::update_JxW_values);
+    const unsigned n = fe_.n_dofs_per_cell();
+    dealii::Vector<double> f(dof_handler_.n_dofs());
+    std::vector<dealii::types::global_dof_index> dofs(n);
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      for (unsigned k = 0; k < dealii::GeometryInfo<3>::faces_per_cell; ++k)
+        {
+          const auto face = cell->face(k);
+          if (!face->at_boundary() || !ids.count(face->boundary_id()) || (where && !where(face->center())))
+            continue;
+          fv.reinit(cell, k);
+          cell->get_dof_indices(dofs);
+          for (unsigned q = 0; q < quad.size(); ++q)
+            for (unsigned i = 0; i < n; ++i)
+              f[dofs[i]] += fv.shape_value(i, q) * t[fe_.system_to_component_index(i).first] * fv.JxW(q);
+        }
+    return f;
+  }
+
+  dealii::Vector<double> SolidBody::solve(const dealii::Vector<double> &f) const
+  {
+    if (f.size() != dof_handler_.n_dofs())
+      throw InputError("3-D load vector", std::to_string(f.size()) + " entries", std::to_string(n_dofs()));
+    dealii::Vector<double> u(f);
+    for (unsigned i = 0; i < u.size(); ++i)
+      if (constrained_[i])
+        u[i] = 0;
+    solver_.solve(u);
+    return u;
+  }
+
+  Tensor3 SolidBody::displacement_at(const dealii::Vector<double> &u, const Point3 &x) const
+  {
+    dealii::Vector<double> v(3);
+    dealii::VectorTools::point_value(dealii::MappingQ1<3>(), dof_handler_, u, x, v);
+    Tensor3 out;
+    for (unsigned c = 0; c < 3; ++c)
+      out[c] = v[c];
+    return out;
+  }
+
+  Tensor3 SolidBody::resultant(const dealii::Vector<double> &f) const
+  {
+    Tensor3 r;
+    // The component of each DoF from the FE system's numbering, cell by cell (each DoF once).
+    std::vector<bool> seen(f.size(), false);
+    std::vector<dealii::types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned i = 0; i < dofs.size(); ++i)
+          if (!seen[dofs[i]])
+            seen[dofs[i]] = true, r[fe_.system_to_component_index(i).first] += f[dofs[i]];
+      }
+    return r;
+  }
+} // namespace gearfem::three_d
