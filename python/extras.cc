@@ -13,6 +13,8 @@
 #include "dynamics/report.h"
 #include "helical/run.h"
 #include "system_deflection/run.h"
+#include "system_deflection/train.h"
+#include "commands/helical_input.h"
 #include "rating/parameters.h"
 #include "rating/rating.h"
 #include "route/route.h"
@@ -177,6 +179,66 @@ namespace gearfem::python
       return out;
     }
 
+    /// `gearfem system` of the input (a Train section; its stages' files relative to the input's
+    /// folder): per stage the summary per torque, the ratios, and the bearings' reactions.
+    py::dict system_run(const Input &in, const py::object &progress)
+    {
+      dealii::ParameterHandler prm;
+      system_deflection::declare_train_parameters(prm);
+      parse(in, prm);
+      auto train = system_deflection::parse_train_parameters(prm, std::filesystem::path(in.dir) / in.name);
+      for (auto &st : train.stages)
+        st.request = commands::read_helical_input(st.input);
+      ProgressStream stream(progress);
+      system_deflection::TrainRun run;
+      {
+        py::gil_scoped_release release;
+        run = system_deflection::run_train(std::move(train), stream.get());
+      }
+      if (!run.failure.empty())
+        throw SolverError(run.failure);
+      py::list stages;
+      for (std::size_t k = 0; k < run.stages.size(); ++k)
+        {
+          py::list rows;
+          for (std::size_t i = 0; i < run.stages[k].summary.size(); ++i)
+            {
+              const auto &t = run.stages[k].summary[i];
+              py::dict d;
+              d["torque [N m]"]         = t.torque;
+              d["STE mean [um]"]        = t.ste_mean / units::um;
+              d["STE p-p [um]"]         = t.ste_pp / units::um;
+              d["K_Hbeta"]              = t.k_h_beta;
+              d["p_max [MPa]"]          = t.p_max / 1e6;
+              d["root stress pinion [MPa]"] = t.root_stress_pinion / 1e6;
+              d["root stress gear [MPa]"]   = t.root_stress_gear / 1e6;
+              if (i < run.iso[k].size())
+                d["F_beta_y [um]"] = run.iso[k][i].f_beta_y / units::um,
+                d["K_Hbeta ISO method C"] = run.iso[k][i].k_h_beta;
+              rows.append(d);
+            }
+          stages.append(rows);
+        }
+      std::vector<double> T, Fx, Fy, Fz, shaft;
+      py::list names;
+      for (const auto &ts : run.shafts)
+        for (std::size_t i = 0; i < ts.solution.reactions.size(); ++i)
+          {
+            const auto &r = ts.solution.reactions[i];
+            T.push_back(ts.torque), shaft.push_back(run.system.bearings[i].shaft);
+            Fx.push_back(r.force.x()), Fy.push_back(r.force.y()), Fz.push_back(r.force.z());
+            names.append(r.name);
+          }
+      py::dict bearings;
+      bearings["torque [N m]"] = array(T), bearings["shaft"] = array(shaft), bearings["bearing"] = names;
+      bearings["F_x [N]"] = array(Fx), bearings["F_y [N]"] = array(Fy), bearings["F_z [N]"] = array(Fz);
+      py::dict out;
+      out["stages"]   = stages;
+      out["ratio"]    = array(run.ratio);
+      out["bearings"] = bearings;
+      return out;
+    }
+
     /// `gearfem dynamics` of the input (Dynamics sections): its tables as dicts of arrays.
     py::dict dynamics_run(const Input &in, const py::object &progress)
     {
@@ -213,6 +275,9 @@ namespace gearfem::python
     m.def("rate", &rate, py::arg("input"), "ISO 6336-2/-3 and AGMA 2101 stresses and factors per torque.");
     m.def("helical", &helical_run, py::arg("input"), py::arg("progress") = py::none(),
           "A helical pair by face-width slicing (the Helical section): the summary per torque.");
+    m.def("system", &system_run, py::arg("input"), py::arg("progress") = py::none(),
+          "A parallel-axis gear train on its shafts (the Train section, its stages' helical input files): "
+          "per stage the summary per torque, the torque ratios and the bearings' reactions.");
     m.def("dynamics", &dynamics_run, py::arg("input"), py::arg("progress") = py::none(),
           "Nonlinear pair dynamics of the input's dynamics sections: its tables (response, sweep, ...).");
   }

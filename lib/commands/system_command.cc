@@ -4,6 +4,7 @@
 #include "base/errors.h"
 #include "base/units.h"
 #include "commands/command.h"
+#include "commands/helical_input.h"
 #include "helical/run.h"
 #include "system_deflection/run.h"
 #include "system_deflection/train.h"
@@ -16,29 +17,30 @@
 
 namespace gearfem::commands
 {
+  helical::Request read_helical_input(const std::filesystem::path &file)
+  {
+    std::ifstream f(file);
+    if (!f)
+      throw InputError("helical input file", file.string(), "an existing readable file");
+    std::stringstream text;
+    text << f.rdbuf();
+    dealii::ParameterHandler prm;
+    helical::declare_request(prm);
+    system_deflection::declare_system_parameters(prm);
+    parse_input_text(text.str(), file.string(), prm);
+    return helical::parse_request(prm);
+  }
+
   namespace system_job
   {
     void declare(dealii::ParameterHandler &prm) { system_deflection::declare_train_parameters(prm); }
-
-    /// A stage's input file as `gearfem helical` reads it.
-    helical::Request read_stage(const std::filesystem::path &file)
-    {
-      std::ifstream f(file);
-      std::stringstream text;
-      text << f.rdbuf();
-      dealii::ParameterHandler prm;
-      helical::declare_request(prm);
-      system_deflection::declare_system_parameters(prm);
-      parse_input_text(text.str(), file.string(), prm);
-      return helical::parse_request(prm);
-    }
 
     void run(dealii::ParameterHandler &prm, const RunContext &ctx)
     {
       std::ostream &out = *ctx.out;
       auto train        = system_deflection::parse_train_parameters(prm, ctx.input_file);
       for (auto &s : train.stages)
-        s.request = read_stage(s.input);
+        s.request = read_helical_input(s.input);
       out << "system: " << train.stages.size() << " stages on " << train.system.shafts.size() << " shafts\n";
       for (std::size_t k = 0; k < train.stages.size(); ++k)
         {

@@ -204,3 +204,39 @@ def test_helical_on_its_shafts_equals_the_cli(tmp_path):
         assert abs(r["K_Hbeta ISO method C"] / iso[T]["k_h_beta_iso_method_c"] - 1) < 1e-9
         assert abs(r["correction slope [um]"] / sysj["correction_slope_um"] - 1) < 1e-9
         assert r["K_Hbeta"] > 1.0  # the shafts bend: not the aligned face
+
+
+def test_system_equals_the_cli(tmp_path):
+    # gearfem.system runs `gearfem system` in the library (the two-stage train at one torque).
+    # Reference: the CLI's stage_<k>/helical.json and bearings.csv of the same input.
+    import csv
+    import json
+    case = os.path.join(SRC, "inputs", "system_two_stage.prm")
+
+    def stage(k):  # the stage on a coarse mesh, 6 positions and 7 slices (quick)
+        p = tmp_path / f"stage_{k}.prm"
+        p.write_text(open(os.path.join(SRC, "inputs", f"system_two_stage_{k}.prm")).read() +
+                     "subsection Solve\n  set Number of positions = 6\nend\n"
+                     "subsection Mesh\n  set h_contact = 0.3\n  set h_fillet = 0.5\n  set h_body = 6\nend\n"
+                     "subsection Helical\n  set Slices = 7\nend\n")
+        return str(p)
+    prm = tmp_path / "train.prm"
+    prm.write_text(open(case).read() + "subsection Train\n  set Torques = 200\n" + "".join(
+        f"  subsection Stage {k}\n    set Input = {stage(k)}\n  end\n" for k in (1, 2)) + "end\n")
+    out = tmp_path / "cli"
+    cli("system", str(prm), "--output-dir", str(out))
+    res = gearfem.system(gearfem.read_input(str(prm)))
+    assert list(res["ratio"]) == [1.0, 3.0]
+    for k in (1, 2):
+        with open(out / f"stage_{k}" / "helical.json") as f:
+            ref = json.load(f)["torques"][0]
+        got = res["stages"][k - 1][0]
+        assert got["torque [N m]"] == ref["torque_Nm"]
+        assert abs(got["K_Hbeta"] / ref["k_h_beta"] - 1) < 1e-9
+        assert abs(got["STE mean [um]"] / ref["ste_mean_um"] - 1) < 1e-9
+    with open(out / "bearings.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == len(res["bearings"]["F_x [N]"]) == 6
+    for r, fx, fy in zip(rows, res["bearings"]["F_x [N]"], res["bearings"]["F_y [N]"]):
+        assert abs(float(r["F_x_N"]) - fx) <= 1e-9 * max(1.0, abs(fx))
+        assert abs(float(r["F_y_N"]) - fy) <= 1e-9 * max(1.0, abs(fy))
