@@ -1,5 +1,6 @@
 #include "three_d/solid_body.h"
 
+#include "base/atomic_file.h"
 #include "base/errors.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -9,6 +10,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
@@ -165,5 +167,23 @@ namespace gearfem::three_d
             seen[dofs[i]] = true, r[fe_.system_to_component_index(i).first] += f[dofs[i]];
       }
     return r;
+  }
+
+  void SolidBody::write_vtu(const dealii::Vector<double> &u, const std::filesystem::path &file, double scale) const
+  {
+    if (u.size() != dof_handler_.n_dofs())
+      throw InputError("3-D displacement", std::to_string(u.size()) + " entries", std::to_string(n_dofs()));
+    dealii::Vector<double> shown(u);
+    shown *= scale;
+    std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation> vec(
+      3, dealii::DataComponentInterpretation::component_is_part_of_vector);
+    dealii::DataOut<3> out;
+    out.attach_dof_handler(dof_handler_);
+    out.add_data_vector(u, std::vector<std::string>(3, "u"), dealii::DataOut<3>::type_dof_data, vec);
+    out.add_data_vector(shown, std::vector<std::string>(3, "shown"), dealii::DataOut<3>::type_dof_data, vec);
+    out.build_patches();
+    AtomicOutputFile f(file);
+    out.write_vtu(f.stream());
+    f.commit();
   }
 } // namespace gearfem::three_d

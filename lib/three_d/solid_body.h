@@ -17,6 +17,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <set>
@@ -58,6 +59,9 @@ namespace gearfem::three_d
     Tensor3 displacement_at(const dealii::Vector<double> &u, const Point3 &x) const;
     /// Sum of a nodal force vector [N].
     Tensor3 resultant(const dealii::Vector<double> &f) const;
+    /// The body as VTU with the displacement u [m] and u times `scale` ("shown", for a warp
+    /// by vector in the viewer), written atomically.
+    void write_vtu(const dealii::Vector<double> &u, const std::filesystem::path &file, double scale = 1.0) const;
 
     dealii::types::boundary_id end_start() const { return end_start_; }
     dealii::types::boundary_id end_finish() const { return end_finish_; }

@@ -16,6 +16,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 using namespace gearfem;
 
@@ -112,6 +116,31 @@ TEST(SolidBody, WithoutPoissonTheBodyIsItsSection)
   const auto d3   = deflection_3d(s, *b2, b, 3, {0.0, 0.5 * b, b}, nullptr, 0.0);
   for (const double v : d3)
     EXPECT_NEAR(v / d2, 1.0, 1e-6);
+}
+
+TEST(SolidBody, WritesItsVtu)
+{
+  // The 3-D body as VTU (the viewer's file): written atomically, with the displacement field.
+  const Section s = section();
+  std::unique_ptr<fem::ElasticBody> b2;
+  deflection_2d(s, 3e-3, fem::PlaneModel::plane_stress, &b2);
+  fem::Elasticity steel;
+  three_d::SolidBody body(b2->triangulation(), steel, {3e-3, 2, 1});
+  body.constrain(dealii::types::boundary_id(mesh::boundary::bore));
+  body.assemble_and_factorize();
+  three_d::Tensor3 t;
+  t[1] = -1e6;
+  const auto u = body.solve(body.traction_load(t, {dealii::types::boundary_id(mesh::boundary::tooth_id(0, mesh::boundary::flank_drive))}));
+  const auto file = std::filesystem::temp_directory_path() / "gearfem_test_solid_body.vtu";
+  std::filesystem::remove(file);
+  body.write_vtu(u, file, 1000);
+  ASSERT_TRUE(std::filesystem::exists(file));
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("<VTKFile"), std::string::npos);
+  EXPECT_NE(text.find("NumberOfCells=\"" + std::to_string(body.n_cells()) + "\""), std::string::npos);
+  EXPECT_NE(text.find("Name=\"u\""), std::string::npos);
+  std::filesystem::remove(file);
 }
 
 TEST(SolidBody, PlaneLimitsOfALoadedTooth)
