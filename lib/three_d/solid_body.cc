@@ -153,6 +153,19 @@ namespace gearfem::three_d
     return out;
   }
 
+  dealii::SymmetricTensor<2, 3> SolidBody::stress_at(const dealii::Vector<double> &u, const Point3 &x) const
+  {
+    std::vector<dealii::Tensor<1, 3>> grad(3);
+    dealii::VectorTools::point_gradient(dealii::MappingQ1<3>(), dof_handler_, u, x, grad);
+    const double E = material_.youngs_modulus, nu = material_.poisson_ratio;
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    dealii::SymmetricTensor<2, 3> eps;
+    for (unsigned i = 0; i < 3; ++i)
+      for (unsigned j = i; j < 3; ++j)
+        eps[i][j] = 0.5 * (grad[i][j] + grad[j][i]);
+    return lambda * dealii::trace(eps) * dealii::unit_symmetric_tensor<3>() + 2 * mu * eps;
+  }
+
   Tensor3 SolidBody::resultant(const dealii::Vector<double> &f) const
   {
     Tensor3 r;

@@ -8,6 +8,7 @@
 #include "fem/elasticity.h"
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -57,6 +58,9 @@ namespace gearfem::three_d
     dealii::Vector<double> solve(const dealii::Vector<double> &f) const;
     /// u_h(x) [m] at a point of the body.
     Tensor3 displacement_at(const dealii::Vector<double> &u, const Point3 &x) const;
+    /// The stress tensor sigma_h(x) [Pa] at a point of the body (from the displacement's
+    /// gradient in the cell that holds x).
+    dealii::SymmetricTensor<2, 3> stress_at(const dealii::Vector<double> &u, const Point3 &x) const;
     /// Sum of a nodal force vector [N].
     Tensor3 resultant(const dealii::Vector<double> &f) const;
     /// The body as VTU with the displacement u [m] and u times `scale` ("shown", for a warp

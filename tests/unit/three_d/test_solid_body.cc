@@ -6,11 +6,16 @@
 // - a wide face (b = 10 m): the deflection in the middle is nearer plane strain than plane
 //   stress, and the mean over the face lies between the two plane models; the variation along
 //   the face is reported;
-// - equilibrium: the applied load's resultant is the requested force.
+// - equilibrium: the applied load's resultant is the requested force;
+// - the fillet's root stress along a wide face: its middle within 5 % of the plane-strain
+//   section's (generalized plane strain), the much lower face ends reported;
+// - the VTU file of the body.
 #include "base/units.h"
 #include "fem/tooth_load.h"
 #include "mesh/domain.h"
 #include "three_d/solid_body.h"
+
+#include <deal.II/numerics/vector_tools.h>
 
 #include <gtest/gtest.h>
 
@@ -194,4 +199,67 @@ TEST(SolidBody, PlaneLimitsOfALoadedTooth)
   EXPECT_GT(mean, strain);
   EXPECT_LT(mean, stress);
   EXPECT_NEAR(d[0], d[20], 1e-9 * d[0]); // a symmetric face
+}
+
+TEST(SolidBody, RootStressAlongTheFace)
+{
+  // The fillet's peak sigma_1 of the 2-D section (the tension side, at its peak point, read just
+  // inside the body) against the 3-D body's along a wide face (b = 10 m). The plane models differ
+  // by 3 % here (through the clamped bore and cuts); the face's middle is in generalized plane
+  // strain, within 5 % of plane strain and above plane stress. The face ends, much lower, are
+  // reported.
+  const Section s = section();
+  const double b = 30e-3;
+  std::unique_ptr<fem::ElasticBody> b2;
+  fem::Elasticity steel;
+  steel.thickness = b;
+  fem::FeOptions fe;
+  fe.degree = 1;
+  dealii::Vector<double> u2;
+  const auto res = fem::solve_flank_load(s.tooth, s.mp, steel, fe, s.load, &b2, &u2);
+  const auto xp  = res.fillet_peak.x;
+  const double r = xp.norm();
+  const fem::Point2 x_in = xp * ((r - 0.05e-3) / r);
+  const auto sigma_1_2d  = [&](const fem::ElasticBody &body, const dealii::Vector<double> &u) {
+    std::vector<dealii::Tensor<1, 2>> g(2);
+    dealii::VectorTools::point_gradient(body.mapping(), body.dof_handler(), u, x_in, g);
+    const auto st = body.material().stress(g[0][0], g[1][1], 0.5 * (g[0][1] + g[1][0]));
+    return fem::principal_stresses(st[0], st[1], st[2])[0];
+  };
+  const double s2 = sigma_1_2d(*b2, u2);
+  std::unique_ptr<fem::ElasticBody> b2e;
+  dealii::Vector<double> u2e;
+  fem::Elasticity strain = steel;
+  strain.model = fem::PlaneModel::plane_strain;
+  fem::solve_flank_load(s.tooth, s.mp, strain, fe, s.load, &b2e, &u2e);
+  const double s2e = sigma_1_2d(*b2e, u2e);
+  std::vector<double> z;
+  for (int k = 0; k <= 20; ++k)
+    z.push_back(b * k / 20);
+  three_d::SolidBody body(b2->triangulation(), fem::Elasticity(), {b, 20, 1});
+  for (const auto id : {mesh::boundary::bore, mesh::boundary::cut_cw, mesh::boundary::cut_ccw})
+    body.constrain(dealii::types::boundary_id(id));
+  body.assemble_and_factorize();
+  const double r_hi = s.load.load_radius, r_lo = r_hi - s.load.patch_length;
+  three_d::Tensor3 t;
+  t[0] = -s.n.x(), t[1] = -s.n.y();
+  auto f = body.traction_load(t, {dealii::types::boundary_id(mesh::boundary::tooth_id(0, mesh::boundary::flank_drive))},
+                              [&](const three_d::Point3 &c) {
+                                const double rc = std::hypot(c[0], c[1]);
+                                return rc >= r_lo - 1e-12 && rc <= r_hi + 1e-12;
+                              });
+  f *= s.load.normal_force / body.resultant(f).norm();
+  const auto u = body.solve(f);
+  std::vector<double> s3;
+  for (const double zk : z)
+    {
+      const auto sig = body.stress_at(u, three_d::Point3(x_in[0], x_in[1], zk));
+      s3.push_back(dealii::eigenvalues(sig)[0]);
+    }
+  std::printf("root stress (sigma_1 at the 2-D peak, 0.05 mm inside): 2-D plane stress %.3f, plane strain %.3f MPa; "
+              "3-D middle %.3f, face end %.3f, largest %.3f MPa\n",
+              s2 / 1e6, s2e / 1e6, s3[10] / 1e6, s3[0] / 1e6, *std::max_element(s3.begin(), s3.end()) / 1e6);
+  EXPECT_NEAR(s3[10] / s2e, 1.0, 0.05);
+  EXPECT_GT(s3[10], s2);
+  EXPECT_NEAR(s3[0], s3[20], 1e-6 * s3[0]);
 }
