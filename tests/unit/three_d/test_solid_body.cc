@@ -77,33 +77,44 @@ namespace
     return -(d[0] * s.n.x() + d[1] * s.n.y());
   }
 
-  /// The 3-D deflection along the load at the load point, at the given z [m].
-  std::vector<double> deflection_3d(const Section &s, const fem::ElasticBody &body2d, double b, int layers,
-                                    const std::vector<double> &z, double *resultant = nullptr, double nu = 0.3)
+  /// The 3-D body of the section `tria` over a face b in `layers`, clamped at the bore and the
+  /// cuts, under the section's flank load spread uniformly over the face; its displacement u.
+  std::unique_ptr<three_d::SolidBody> loaded_body(const Section &s, const dealii::Triangulation<2> &tria, double b,
+                                                  int layers, double nu, dealii::Vector<double> &u,
+                                                  double *resultant = nullptr)
   {
     fem::Elasticity steel;
     steel.poisson_ratio = nu;
-    three_d::SolidBody body(body2d.triangulation(), steel, {b, layers, 1});
+    auto body = std::make_unique<three_d::SolidBody>(tria, steel, three_d::ExtrusionOptions{b, layers, 1});
     for (const auto id : {mesh::boundary::bore, mesh::boundary::cut_cw, mesh::boundary::cut_ccw})
-      body.constrain(dealii::types::boundary_id(id));
-    body.assemble_and_factorize();
+      body->constrain(dealii::types::boundary_id(id));
+    body->assemble_and_factorize();
     const double r_hi = s.load.load_radius, r_lo = r_hi - s.load.patch_length;
     three_d::Tensor3 t;
     t[0] = -s.n.x(), t[1] = -s.n.y();
-    auto f = body.traction_load(
+    auto f = body->traction_load(
       t, {dealii::types::boundary_id(mesh::boundary::tooth_id(0, mesh::boundary::flank_drive))},
       [&](const three_d::Point3 &c) {
         const double r = std::hypot(c[0], c[1]);
         return r >= r_lo - 1e-12 && r <= r_hi + 1e-12;
       });
-    f *= s.load.normal_force / body.resultant(f).norm();
+    f *= s.load.normal_force / body->resultant(f).norm();
     if (resultant)
-      *resultant = body.resultant(f).norm();
-    const auto u = body.solve(f);
+      *resultant = body->resultant(f).norm();
+    u = body->solve(f);
+    return body;
+  }
+
+  /// The 3-D deflection along the load at the load point, at the given z [m].
+  std::vector<double> deflection_3d(const Section &s, const fem::ElasticBody &body2d, double b, int layers,
+                                    const std::vector<double> &z, double *resultant = nullptr, double nu = 0.3)
+  {
+    dealii::Vector<double> u;
+    const auto body = loaded_body(s, body2d.triangulation(), b, layers, nu, u, resultant);
     std::vector<double> out;
     for (const double zk : z)
       {
-        const auto d = body.displacement_at(u, three_d::Point3(s.x.x(), s.x.y(), zk));
+        const auto d = body->displacement_at(u, three_d::Point3(s.x.x(), s.x.y(), zk));
         out.push_back(-(d[0] * s.n.x() + d[1] * s.n.y()));
       }
     return out;
@@ -236,24 +247,12 @@ TEST(SolidBody, RootStressAlongTheFace)
   std::vector<double> z;
   for (int k = 0; k <= 20; ++k)
     z.push_back(b * k / 20);
-  three_d::SolidBody body(b2->triangulation(), fem::Elasticity(), {b, 20, 1});
-  for (const auto id : {mesh::boundary::bore, mesh::boundary::cut_cw, mesh::boundary::cut_ccw})
-    body.constrain(dealii::types::boundary_id(id));
-  body.assemble_and_factorize();
-  const double r_hi = s.load.load_radius, r_lo = r_hi - s.load.patch_length;
-  three_d::Tensor3 t;
-  t[0] = -s.n.x(), t[1] = -s.n.y();
-  auto f = body.traction_load(t, {dealii::types::boundary_id(mesh::boundary::tooth_id(0, mesh::boundary::flank_drive))},
-                              [&](const three_d::Point3 &c) {
-                                const double rc = std::hypot(c[0], c[1]);
-                                return rc >= r_lo - 1e-12 && rc <= r_hi + 1e-12;
-                              });
-  f *= s.load.normal_force / body.resultant(f).norm();
-  const auto u = body.solve(f);
+  dealii::Vector<double> u;
+  const auto body = loaded_body(s, b2->triangulation(), b, 20, 0.3, u);
   std::vector<double> s3;
   for (const double zk : z)
     {
-      const auto sig = body.stress_at(u, three_d::Point3(x_in[0], x_in[1], zk));
+      const auto sig = body->stress_at(u, three_d::Point3(x_in[0], x_in[1], zk));
       s3.push_back(dealii::eigenvalues(sig)[0]);
     }
   std::printf("root stress (sigma_1 at the 2-D peak, 0.05 mm inside): 2-D plane stress %.3f, plane strain %.3f MPa; "
