@@ -22,7 +22,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
-from vcheck import Checks, load_shares, read_csv, write_if_changed  # noqa: E402
+from vcheck import Checks, load_shares, read_csv, save_figure, write_if_changed  # noqa: E402
 
 CASE = "calculix_internal"
 TOL_STE = 0.01            # |STE ccx / gearfem - 1|, every position and torque
@@ -318,10 +318,7 @@ def plot(path, torques, positions, roll, G, gp, cp, kref, ccx_at, R):
         a_.legend(fontsize=7)
         a_.grid(alpha=0.3)
     fig.suptitle("Planet z 28 in ring z 74: gearfem (Lagrange) against CalculiX 2.20 (CPS8, penalty), same meshes")
-    fig.tight_layout()
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, path)
+    save_figure(fig, path, dpi=110)
 
 
 if __name__ == "__main__":

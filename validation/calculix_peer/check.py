@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-from vcheck import Checks, load_shares, read_csv, write_if_changed
+from vcheck import Checks, load_shares, read_csv, save_figure, write_if_changed
 
 RB1 = 33.8289343483  # pinion base radius [mm] (gearfem profile inputs/fzg_c.prm)
 B_ROLL, D_ROLL = -5.9828, 6.1126  # transitions on the pinion roll angle [deg] (same output)
@@ -336,10 +336,7 @@ def plot(path, torques, positions, roll, G, gp, cp, C, kappas, ccx_at):
         a_.legend(fontsize=7)
         a_.grid(alpha=0.3)
     fig.suptitle("FZG type C: gearfem (Lagrange) against CalculiX 2.20 (CPS8, surface-to-surface penalty), same meshes")
-    fig.tight_layout()
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, path)
+    save_figure(fig, path, dpi=110)
 
 
 if __name__ == "__main__":

@@ -16,7 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vcheck import Checks, write_if_changed  # noqa: E402
+from vcheck import Checks, save_figure, write_if_changed  # noqa: E402
 import iso_reference as iso  # noqa: E402
 
 EPS = ["0", "0.25", "0.5", "0.75", "1", "1.25", "1.5", "1.75", "2"]
@@ -195,10 +195,7 @@ def plot(path, run, pp):
     ax[1].set_title("spur face, f_Sigma_beta 25 um")
     ax[1].legend(fontsize=8)
     ax[1].grid(alpha=0.3)
-    fig.tight_layout()
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=100)
-    os.replace(tmp, path)
+    save_figure(fig, path, dpi=100)
 
 
 if __name__ == "__main__":

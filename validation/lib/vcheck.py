@@ -217,3 +217,11 @@ def read_prm(path):
                 k, v = line[4:].split("=", 1)
                 out["/".join(stack + [k.strip()])] = v.strip()
     return out
+
+
+def save_figure(fig, path, dpi=100):
+    """Lay out `fig` and write it to `path` through a temporary name (never a half-written PNG)."""
+    fig.tight_layout()
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp, dpi=dpi)
+    os.replace(tmp, path)

@@ -18,7 +18,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "lib"))
 sys.path.insert(0, os.path.join(here, "..", "helical"))
 sys.path.insert(0, here)
-from vcheck import Checks, read_prm, write_if_changed  # noqa: E402
+from vcheck import Checks, read_prm, save_figure, write_if_changed  # noqa: E402
 import iso_reference as iso  # noqa: E402
 import shaft_reference as sr  # noqa: E402
 
@@ -396,10 +396,7 @@ def plot(run, path):
     ax[1].set_xlabel("z along the shaft [mm]")
     ax[1].set_ylabel("|u| radial [um] at 400 N m")
     ax[1].legend()
-    fig.tight_layout()
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, path)
+    save_figure(fig, path, dpi=110)
 
 
 if __name__ == "__main__":
