@@ -110,6 +110,19 @@ namespace gearfem::helical
       throw InputError("Helical/Coupling length", to_string_g(in.coupling_length / units::mm) + " mm",
                        "-1 (one normal module), 0 (uncoupled) or up to the face width " + to_string_g(b / units::mm) +
                          " mm");
+    if (in.model == FaceModel::solid)
+      {
+        const auto &d = in.solid;
+        if (d.element_size < 0)
+          throw InputError("Helical/3-D element size", to_string_g(d.element_size / units::mm) + " mm", "0 (m_n/3) or > 0");
+        if (d.layers_per_slice < 1 || d.layers_per_slice * in.slices > 400)
+          throw InputError("Helical/3-D layers per slice", std::to_string(d.layers_per_slice),
+                           "1 to " + std::to_string(std::max(1, 400 / in.slices)) + " (400 layers over the face)");
+        if (d.flank_points < 2 || d.flank_points > 50)
+          throw InputError("Helical/3-D flank points", std::to_string(d.flank_points), "2 to 50");
+        if (d.sector_teeth < 1 || d.sector_teeth > 9 || d.sector_teeth % 2 == 0)
+          throw InputError("Helical/3-D sector teeth", std::to_string(d.sector_teeth), "odd, 1 to 9");
+      }
     const auto &m = in.lead;
     check_profile(m, b);
     require_range("Helical/Crowning", m.crowning / units::um, 0.0, 1000.0, "um");

@@ -43,6 +43,23 @@ namespace gearfem::helical
     shear    ///< a Pasternak shear layer between neighbouring sections
   };
 
+  /// What joins the sections of the face (helical/slicing.h).
+  enum class FaceModel
+  {
+    slices, ///< the beam (or shear layer) of the `Coupling` entries
+    solid   ///< the coarse 3-D FE body of each gear (three_d/face_compliance.h)
+  };
+
+  /// The 3-D FE model of the face (`Helical/Model = 3-D FE`).
+  struct SolidFace
+  {
+    double element_size = 0;  ///< of the coarse section [m]; 0: m_n / 3
+    unsigned degree     = 2;  ///< FE_Q(p), {1, 2}
+    int layers_per_slice = 1; ///< cells across one slice
+    int flank_points    = 7;  ///< grid points over each drive flank
+    int sector_teeth    = 3;  ///< teeth of each gear's sector, odd, >= 1
+  };
+
   /// The `Helical` section.
   struct HelixInput
   {
@@ -57,6 +74,8 @@ namespace gearfem::helical
     /// Length l of the coupling between neighbouring slices [m] (helical/slicing.h): a point
     /// load spreads over an effective width 2 l; 0: uncoupled slices; < 0: one normal module.
     double coupling_length = -1;
+    FaceModel model = FaceModel::slices;
+    SolidFace solid;
     LeadModification lead;
   };
 

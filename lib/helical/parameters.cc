@@ -41,6 +41,23 @@ namespace gearfem::helical
                       "Length l of the coupling: a point load on the face spreads over an effective width 2 l "
                       "(docs/helical.md). Units: mm. Allowed: -1 (one normal module), 0 (uncoupled slices), or "
                       "> 0 up to the face width.");
+    prm.declare_entry("Model", "slices", Selection("slices|3-D FE"),
+                      "What joins the sections across the face (docs/three_d.md). slices: the beam of the Coupling "
+                      "entries. 3-D FE: a coarse 3-D finite-element body of each gear (a sector extruded along the "
+                      "helix) gives the far field across the face, and the exact 2-D sections the contact (the "
+                      "combined method); slower to set up, no coupling length to choose. Units: none.");
+    prm.declare_entry("3-D element size", "0", Double(),
+                      "Element size of the coarse section of the 3-D bodies. Units: mm. Allowed: 0 (m_n/3) or > 0 "
+                      "up to 2 m_n.");
+    prm.declare_entry("3-D degree", "2", Integer(), "Polynomial degree of the 3-D elements. Units: none. Allowed: 1, 2.");
+    prm.declare_entry("3-D layers per slice", "1", Integer(),
+                      "Hexahedra across the width of one slice. Units: none. Allowed: 1 to 400/Slices.");
+    prm.declare_entry("3-D flank points", "7", Integer(),
+                      "Radii over each drive flank at which the 3-D face is tabulated (linear between). Units: none. "
+                      "Allowed: 2 to 50.");
+    prm.declare_entry("3-D sector teeth", "3", Integer(),
+                      "Teeth of each gear's 3-D sector (clamped at its bore and cuts; the middle tooth is loaded). "
+                      "Units: none. Allowed: odd, 1 to 9.");
     prm.declare_entry("Crowning", "0", Double(),
                       "Lead crowning C_beta, removed at each end of the face (parabolic), both gears together. "
                       "Units: um. Allowed: 0 to 1000.");
@@ -74,6 +91,15 @@ namespace gearfem::helical
     h.coupling        = prm.get("Coupling") == "shear" ? Coupling::shear : Coupling::bending;
     const double l    = params::get_double(prm, "Coupling length");
     h.coupling_length = l < 0 ? l : l * units::mm;
+    h.model             = prm.get("Model") == "3-D FE" ? FaceModel::solid : FaceModel::slices;
+    h.solid.element_size = params::get_double(prm, "3-D element size") * units::mm;
+    const long degree    = params::get_integer(prm, "3-D degree");
+    if (degree != 1 && degree != 2)
+      throw InputError("Helical/3-D degree", std::to_string(degree), "1 or 2");
+    h.solid.degree           = unsigned(degree);
+    h.solid.layers_per_slice = int(params::get_integer(prm, "3-D layers per slice"));
+    h.solid.flank_points     = int(params::get_integer(prm, "3-D flank points"));
+    h.solid.sector_teeth     = int(params::get_integer(prm, "3-D sector teeth"));
     auto &m             = h.lead;
     m.crowning          = params::get_double(prm, "Crowning") * units::um;
     m.end_relief        = params::get_double(prm, "End relief") * units::um;

@@ -39,6 +39,8 @@ namespace gearfem::helical
     o.slices      = hx.slices;
     o.coupling        = hx.coupling;
     o.coupling_length = hx.coupling_length < 0 ? o.helix.m_n : hx.coupling_length;
+    o.model       = hx.model;
+    o.solid       = hx.solid;
     o.lead        = hx.lead;
     o.alpha_wt    = pair.working_pressure_angle();
     o.post        = post;

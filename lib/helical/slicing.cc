@@ -10,6 +10,7 @@
 #include "base/units.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -109,7 +110,7 @@ namespace gearfem::helical
   void SlicedPair::couple(System &s, const std::vector<Sub> &sub) const
   {
     const double l = o_.coupling_length;
-    if (!(l > 0))
+    if (!(l > 0) && !o_.face)
       return;
     const int N     = o_.slices;
     const double dz = o_.helix.face_width / N;
@@ -166,6 +167,11 @@ namespace gearfem::helical
           }
       }
     const int n = N * P;
+    if (o_.face)
+      {
+        face_correction(s, sub);
+        return;
+      }
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
     for (int k = 0; k < N; ++k)
       A.block(k * P, k * P, P, P) = s.K[std::size_t(k)];
@@ -205,10 +211,78 @@ namespace gearfem::helical
           for (int t = 0; t < m; ++t)
             s.dC(k * P + on[std::size_t(r)], k * P + on[std::size_t(t)]) -= C(r, t);
       }
+    index_unknowns(s, sub);
+  }
+
+  void SlicedPair::index_unknowns(System &s, const std::vector<Sub> &sub) const
+  {
     // The coupled operator is W = blockdiag(W_j / weight_j) + U dC U^T, U(i, at_i) = a_i.
     s.at.resize(std::size_t(s.m));
     for (int i = 0; i < s.m; ++i)
       s.at[std::size_t(i)] = s.index(sub[std::size_t(s.sub[std::size_t(i)])].slice, s.pair[std::size_t(i)]);
+  }
+
+  void SlicedPair::face_correction(System &s, const std::vector<Sub> &sub) const
+  {
+    // The contact of each tooth pair in each slice: its radius on each gear, from the stored
+    // candidates of the pair (the force-weighted mean of those that carry load at the build,
+    // else the closest), the sub-slices of a slice weighted by their widths.
+    const int N = o_.slices, P = s.n_pairs;
+    Eigen::MatrixXd r[2] = {Eigen::MatrixXd::Zero(N, P), Eigen::MatrixXd::Zero(N, P)};
+    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(N, P);
+    for (std::size_t j = 0; j < sub.size(); ++j)
+      {
+        const auto &p = *sub[j].p;
+        std::map<long, std::array<double, 4>> acc; // sum F r1, sum F r2, sum F, (closest gap)
+        std::map<long, std::array<double, 3>> closest; // gap, r1, r2
+        for (const auto &cd : p.cand)
+          {
+            const auto &pt  = cd.point;
+            const long key  = pair_key(pt.tooth(1), pt.tooth(2), sub[j].wrap);
+            const contact::Vec2 on1  = pt.slave_body == 1 ? pt.x : pt.master_point;
+            const contact::Vec2 on2  = pt.slave_body == 1 ? pt.master_point : pt.x;
+            const double r1 = (on1 - p.placement[0].centre).norm(), r2 = (on2 - p.placement[1].centre).norm();
+            auto &a = acc.try_emplace(key, std::array<double, 4>{0, 0, 0, 0}).first->second;
+            if (pt.force > 0)
+              a[0] += pt.force * r1, a[1] += pt.force * r2, a[2] += pt.force;
+            auto it = closest.find(key);
+            if (it == closest.end() || pt.gap < it->second[0])
+              closest[key] = {pt.gap, r1, r2};
+          }
+        for (const auto &[key, a] : acc)
+          {
+            const int q = s.pair_index.at(key), k = sub[j].slice;
+            const auto &c = closest.at(key);
+            const double r1 = a[2] > 0 ? a[0] / a[2] : c[1], r2 = a[2] > 0 ? a[1] / a[2] : c[2];
+            r[0](k, q) += sub[j].weight * r1, r[1](k, q) += sub[j].weight * r2, w(k, q) += sub[j].weight;
+          }
+      }
+    s.dC = Eigen::MatrixXd::Zero(N * P, N * P);
+    const double rb2 = rb1_ * rb1_;
+    for (int q = 0; q < P; ++q)
+      {
+        std::vector<int> on;
+        for (int k = 0; k < N; ++k)
+          if (w(k, q) > 0)
+            on.push_back(k);
+        if (on.empty())
+          continue;
+        // Slices where the pair has no candidate carry no force: any radius (the nearest).
+        std::vector<double> r1(static_cast<std::size_t>(N)), r2(static_cast<std::size_t>(N));
+        for (int k = 0; k < N; ++k)
+          {
+            int best = on.front();
+            for (const int p : on)
+              if (std::abs(p - k) < std::abs(best - k))
+                best = p;
+            r1[std::size_t(k)] = r[0](best, q) / w(best, q), r2[std::size_t(k)] = r[1](best, q) / w(best, q);
+          }
+        const Eigen::MatrixXd C = o_.face(r1, r2);
+        for (int k = 0; k < N; ++k)
+          for (int kk = 0; kk < N; ++kk)
+            s.dC(k * P + q, kk * P + q) = C(k, kk) / rb2;
+      }
+    index_unknowns(s, sub);
   }
 
   long SlicedPair::pair_key(int t1, int t2, long wrap) const

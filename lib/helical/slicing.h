@@ -35,6 +35,7 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -97,10 +98,17 @@ namespace gearfem::helical
     int slices = 21;
     Coupling coupling = Coupling::bending;
     double coupling_length = 0; ///< l [m], >= 0
+    FaceModel model = FaceModel::slices; ///< solid: `face` is set by the route (system_deflection::run_job)
+    SolidFace solid;
     LeadModification lead;
     double alpha_wt = 0;        ///< working transverse pressure angle [rad] (lead_gap)
     Grid grid;
     post::PostOptions post;
+    /// The face of one tooth pair in 3-D in place of the beam (helical/slicing.h, the 3-D FE
+    /// model, three_d/face_compliance.h): given the contact's radius on gear 1 and on gear 2
+    /// in each slice [m], the correction to the independent sections over the slices [m/N]
+    /// (transverse strip forces, work-conjugate deflections; symmetric). Empty: the beam.
+    std::function<Eigen::MatrixXd(const std::vector<double> &r1, const std::vector<double> &r2)> face;
   };
 
   class SlicedOperator;
@@ -152,6 +160,9 @@ namespace gearfem::helical
     Eigen::MatrixXd section_stiffness(const contact::CondensedPosition &p,
                                       const std::vector<std::pair<int, int>> &pairs) const;
     void couple(System &s, const std::vector<Sub> &sub) const;
+    /// The coupling of the 3-D face (options().face) in place of the beam.
+    void face_correction(System &s, const std::vector<Sub> &sub) const;
+    void index_unknowns(System &s, const std::vector<Sub> &sub) const;
     // The phases of solve(): the absolute tooth-pair key; a sub-slice's stored configuration,
     // offsets and initial candidates at a load; the coupled problem (returns the start
     // rotation); the Newton loop on the rotation (returns active-set iterations); a new scene

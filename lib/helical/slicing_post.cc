@@ -26,8 +26,11 @@ namespace gearfem::helical
     // stress per unit load of the section's own contact (or of the nearest slice where the pair
     // carries a tenth of its largest load or more: a lightly loaded section's fillet stress comes
     // mostly from the neighbouring tooth's load).
+    // The 3-D face (options().face) carries its sections' loads as they are: its correction
+    // holds the plane condition too, which moves the deflection and not the stress.
+    const bool beam = s.coupled() && !o_.face;
     Eigen::VectorXd tq, Fq;
-    if (s.coupled())
+    if (beam)
       {
         tq = s.pair_torques(sub, s.solution.lambda);
         const Eigen::VectorXd shift = s.dC * tq;
@@ -39,7 +42,7 @@ namespace gearfem::helical
     for (const auto &[key, t] : tau)
       {
         Eigen::VectorXd F = t;
-        if (s.coupled())
+        if (beam)
           for (int k = 0; k < N; ++k)
             F[k] = Fq[s.index(k, key)];
         for (int g = 0; g < 2; ++g)

@@ -1,4 +1,5 @@
 #include "system_deflection/run.h"
+#include "system_deflection/solid_face.h"
 #include "system_deflection/tables.h"
 
 #include "base/atomic_file.h"
@@ -94,10 +95,12 @@ namespace gearfem::system_deflection
   CoupledRun run_job(const solve::GearContactInput &section, const helical::SlicingOptions &o, helical::RunOptions ro,
                      const SystemInput &sys)
   {
+    // The 3-D face, when asked, joins the slices on either route.
+    const helical::SlicingOptions so = o.model == helical::FaceModel::solid && !o.face ? with_solid_face(section, o, ro.out) : o;
     if (sys.coupled)
-      return run_coupled(section, o, std::move(ro), sys);
+      return run_coupled(section, so, std::move(ro), sys);
     CoupledRun run;
-    run.helical = helical::run_helical(section, o, ro);
+    run.helical = helical::run_helical(section, so, ro);
     return run;
   }
 

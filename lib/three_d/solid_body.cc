@@ -9,11 +9,13 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace gearfem::three_d
 {
@@ -37,6 +39,13 @@ namespace gearfem::three_d
                        "an unrefined section mesh (deal.II extrudes coarse meshes only)");
     // deal.II counts the planes of vertices: layers + 1 of them.
     dealii::GridGenerator::extrude_triangulation(section, unsigned(options_.layers + 1), options_.face_width, tria_);
+    if (options_.twist != 0)
+      dealii::GridTools::transform(
+        [w = options_.twist, m = 0.5 * options_.face_width](const Point3 &p) {
+          const double c = std::cos(w * (p[2] - m)), s = std::sin(w * (p[2] - m));
+          return Point3(c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]);
+        },
+        tria_);
     // The end faces take the two ids after the largest of the section (deal.II's rule).
     dealii::types::boundary_id top = 0;
     for (const auto id : section.get_boundary_ids())
@@ -105,7 +114,7 @@ namespace gearfem::three_d
       for (auto it = stiffness_.begin(r); it != stiffness_.end(r); ++it)
         if (constrained_[r] || constrained_[it->column()])
           it->value() = (r == it->column()) ? diag : 0.0;
-    solver_.initialize(stiffness_);
+    solver_.factorize(stiffness_, fem::SolverKind::mumps);
   }
 
   dealii::Vector<double> SolidBody::traction_load(const Tensor3 &t, const std::set<dealii::types::boundary_id> &ids,
@@ -131,16 +140,41 @@ namespace gearfem::three_d
     return f;
   }
 
+  void SolidBody::add_point_force(const Point3 &x, const Tensor3 &force, dealii::Vector<double> &f) const
+  {
+    const dealii::MappingQ1<3> mapping;
+    const auto found = dealii::GridTools::find_active_cell_around_point(mapping, dof_handler_, x);
+    const dealii::Quadrature<3> at(dealii::GeometryInfo<3>::project_to_unit_cell(found.second));
+    dealii::FEValues<3> fv(mapping, fe_, at, dealii::update_values);
+    fv.reinit(found.first);
+    std::vector<dealii::types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+    found.first->get_dof_indices(dofs);
+    for (unsigned i = 0; i < dofs.size(); ++i)
+      f[dofs[i]] += fv.shape_value(i, 0) * force[fe_.system_to_component_index(i).first];
+  }
+
   dealii::Vector<double> SolidBody::solve(const dealii::Vector<double> &f) const
   {
     if (f.size() != dof_handler_.n_dofs())
       throw InputError("3-D load vector", std::to_string(f.size()) + " entries", std::to_string(n_dofs()));
-    dealii::Vector<double> u(f);
-    for (unsigned i = 0; i < u.size(); ++i)
+    dealii::Vector<double> b(f), u(f.size());
+    for (unsigned i = 0; i < b.size(); ++i)
       if (constrained_[i])
-        u[i] = 0;
-    solver_.solve(u);
+        b[i] = 0;
+    solver_.solve(b, u);
     return u;
+  }
+
+  void SolidBody::solve_block(std::vector<double> &columns, unsigned k) const
+  {
+    const std::size_t n = dof_handler_.n_dofs();
+    if (columns.size() != n * k)
+      throw InputError("3-D load block", std::to_string(columns.size()) + " entries", std::to_string(n * k));
+    for (unsigned c = 0; c < k; ++c)
+      for (std::size_t i = 0; i < n; ++i)
+        if (constrained_[i])
+          columns[c * n + i] = 0;
+    solver_.solve_block(columns, k);
   }
 
   Tensor3 SolidBody::displacement_at(const dealii::Vector<double> &u, const Point3 &x) const

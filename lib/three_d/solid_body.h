@@ -1,10 +1,11 @@
 #pragma once
 // A gear body in three dimensions (dim = 3 lives only in this library target): the 2-D section's
 // quadrilateral mesh (fem::ElasticBody's, unrefined) extruded along the face width into
-// hexahedra, FE_Q(p)^3 on straight-sided cells, isotropic linear elasticity, UMFPACK. The face
+// hexahedra, FE_Q(p)^3 on straight-sided cells, isotropic linear elasticity, MUMPS (fem/direct_solver.h). The face
 // runs over z in [0, b] in layers of equal thickness. The lateral faces keep the section's
 // boundary ids (flanks, fillets, bore, sector cuts: mesh/domain.h); the end faces get
 // end_start() (z = 0) and end_finish() (z = b). SI units.
+#include "fem/direct_solver.h"
 #include "fem/elasticity.h"
 
 #include <deal.II/base/point.h>
@@ -13,7 +14,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -33,6 +33,10 @@ namespace gearfem::three_d
     double face_width = 0;  ///< b [m]
     int layers        = 4;  ///< cells across the face
     unsigned degree   = 1;  ///< p of FE_Q(p)^3, {1, 2}
+    /// Rotation of the section per unit z, counter-clockwise about the z axis [rad/m]: the
+    /// vertices at z turn by twist (z - b/2), the middle of the face keeping the section (a
+    /// helical gear; 0: spur). The cells stay straight-sided.
+    double twist      = 0;
     /// InputError naming the entry for b <= 0, layers outside 1..400, p outside {1, 2}.
     void validate() const;
   };
@@ -54,8 +58,13 @@ namespace gearfem::three_d
     /// centre passes `where` (all when null).
     dealii::Vector<double> traction_load(const Tensor3 &t, const std::set<dealii::types::boundary_id> &ids,
                                          const std::function<bool(const Point3 &)> &where = {}) const;
+    /// Add the point force `force` [N] at x (a point of the body) to f.
+    void add_point_force(const Point3 &x, const Tensor3 &force, dealii::Vector<double> &f) const;
     /// u = K^-1 f with the clamped DoFs at zero.
     dealii::Vector<double> solve(const dealii::Vector<double> &f) const;
+    /// The same for k load vectors at once (column-major n_dofs x k, overwritten by the
+    /// displacements): one multi-right-hand-side solve.
+    void solve_block(std::vector<double> &columns, unsigned k) const;
     /// u_h(x) [m] at a point of the body.
     Tensor3 displacement_at(const dealii::Vector<double> &u, const Point3 &x) const;
     /// The stress tensor sigma_h(x) [Pa] at a point of the body (from the displacement's
@@ -83,7 +92,7 @@ namespace gearfem::three_d
     dealii::SparseMatrix<double> stiffness_;
     std::set<dealii::types::boundary_id> clamped_;
     std::vector<bool> constrained_;
-    dealii::SparseDirectUMFPACK solver_;
+    fem::DirectSolver solver_;
     dealii::types::boundary_id end_start_ = 0, end_finish_ = 0;
   };
 } // namespace gearfem::three_d
