@@ -62,7 +62,9 @@ namespace gearfem::helical
         << ", \"face_width_mm\": " << b / units::mm << ", \"axial_pitch_mm\": "
         << (std::isfinite(h.axial_pitch) ? h.axial_pitch / units::mm : 0.0) << ",\n  \"eps_alpha\": " << run.eps_alpha
         << ", \"eps_beta\": " << h.overlap_ratio << ", \"eps_gamma\": " << run.eps_gamma << ", \"slices\": " << o.slices
-         << ", \"coupling\": \"" << (o.coupling == Coupling::shear ? "shear" : "bending") << "\""
+         << ", \"model\": \"" << (o.model == FaceModel::solid ? "3-D FE" : "slices") << "\""
+        << ", \"face_setup_seconds\": " << o.face_seconds << ", \"face_dofs\": " << o.face_dofs
+        << ", \"coupling\": \"" << (o.coupling == Coupling::shear ? "shear" : "bending") << "\""
         << ", \"coupling_length_mm\": " << o.coupling_length / units::mm << ", \"grid_positions\": " << o.grid.size
         << ",\n  \"mesh_misalignment_um\": " << o.lead.mesh_misalignment(o.alpha_wt) / units::um
         << ", \"crowning_um\": " << o.lead.crowning / units::um << ", \"setup_seconds\": " << run.setup_seconds

@@ -258,6 +258,7 @@ namespace gearfem::helical
           }
       }
     s.dC = Eigen::MatrixXd::Zero(N * P, N * P);
+    s.radius[0] = s.radius[1] = Eigen::MatrixXd::Zero(N, P);
     const double rb2 = rb1_ * rb1_;
     for (int q = 0; q < P; ++q)
       {
@@ -277,6 +278,8 @@ namespace gearfem::helical
                 best = p;
             r1[std::size_t(k)] = r[0](best, q) / w(best, q), r2[std::size_t(k)] = r[1](best, q) / w(best, q);
           }
+        for (int k = 0; k < N; ++k)
+          s.radius[0](k, q) = r1[std::size_t(k)], s.radius[1](k, q) = r2[std::size_t(k)];
         const Eigen::MatrixXd C = o_.face(r1, r2);
         for (int k = 0; k < N; ++k)
           for (int kk = 0; kk < N; ++kk)

@@ -109,6 +109,11 @@ namespace gearfem::helical
     /// in each slice [m], the correction to the independent sections over the slices [m/N]
     /// (transverse strip forces, work-conjugate deflections; symmetric). Empty: the beam.
     std::function<Eigen::MatrixXd(const std::vector<double> &r1, const std::vector<double> &r2)> face;
+    /// With `face`: gear g's (1, 2) fillet in 3-D, the load each slice's section would carry
+    /// to reach it [N], from the slices' transverse forces [N] and contact radii on gear g [m].
+    std::function<std::vector<double>(int g, const std::vector<double> &force, const std::vector<double> &r)> face_root;
+    double face_seconds = 0; ///< to build `face` (both 3-D bodies and their tables) [s]
+    unsigned face_dofs  = 0; ///< DoFs of the two 3-D bodies
   };
 
   class SlicedOperator;

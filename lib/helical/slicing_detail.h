@@ -43,6 +43,8 @@ namespace gearfem::helical
     Eigen::MatrixXd dC;
     std::vector<int> at; ///< (slice, pair) index of each unknown in dC
     std::vector<Eigen::MatrixXd> K;
+    /// The 3-D face: the contact's radius on gear 1 and gear 2 per (slice, pair index) [m].
+    Eigen::MatrixXd radius[2];
     bool coupled() const { return dC.size() > 0; }
     int index(int slice, long key) const { return slice * n_pairs + pair_index.at(key); }
     /// The contact torque of each (slice, pair) [N m] under candidate forces lambda.

@@ -50,6 +50,17 @@ namespace gearfem::helical
             const auto it = sig[g].find(key);
             if (it == sig[g].end())
               continue;
+            if (o_.face && o_.face_root && s.pair_index.count(key))
+              {
+                // The 3-D fillet: the load the section would carry to reach its stress.
+                const int q = s.pair_index.at(key);
+                std::vector<double> f(static_cast<std::size_t>(N)), r(static_cast<std::size_t>(N));
+                for (int k = 0; k < N; ++k)
+                  f[std::size_t(k)] = std::max(0.0, t[k]) / rb1_, r[std::size_t(k)] = s.radius[g](k, q);
+                const std::vector<double> e = o_.face_root(g + 1, f, r);
+                for (int k = 0; k < N; ++k)
+                  F[k] = e[std::size_t(k)] * rb1_;
+              }
             const Eigen::VectorXd &sg = it->second;
             const double floor = 0.1 * t.maxCoeff();
             for (int k = 0; k < N; ++k)

@@ -55,6 +55,11 @@ namespace gearfem::system_deflection
           *out << "3-D body of gear " << i << ": " << face[i - 1]->n_cells() << " cells, " << face[i - 1]->n_dofs()
                << " DoFs, " << to_string_g(face[i - 1]->seconds()) << " s\n";
       }
+    o.face_seconds = face[0]->seconds() + face[1]->seconds();
+    o.face_dofs    = face[0]->n_dofs() + face[1]->n_dofs();
+    o.face_root = [face0 = face[0], face1 = face[1]](int g, const std::vector<double> &f, const std::vector<double> &r) {
+      return (g == 1 ? face0 : face1)->section_load(f, r);
+    };
     o.face = [f1 = face[0], f2 = face[1]](const std::vector<double> &r1, const std::vector<double> &r2) {
       return Eigen::MatrixXd(f1->correction(r1) + f2->correction(r2));
     };

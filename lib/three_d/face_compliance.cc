@@ -79,6 +79,7 @@ namespace gearfem::three_d
         sparsity_.copy_from(dsp);
         K_.reinit(sparsity_);
         const double lambda = m.lambda(), mu = m.mu();
+        lambda_ = lambda, mu_ = mu;
         const dealii::QGauss<2> quad(p + 1);
         dealii::FEValues<2> fv(mapping_, fe_, quad, dealii::update_gradients | dealii::update_JxW_values);
         const unsigned n = fe_.n_dofs_per_cell();
@@ -133,6 +134,25 @@ namespace gearfem::three_d
         return f;
       }
 
+      /// d . sigma . d at x as a functional of the displacement (plane model's lambda).
+      Sparse stress_functional(const mesh::Vec2 &x, const mesh::Vec2 &d) const
+      {
+        const auto found = dealii::GridTools::find_active_cell_around_point(mapping_, dofs_, dealii::Point<2>(x.x(), x.y()));
+        const dealii::Quadrature<2> at(dealii::GeometryInfo<2>::project_to_unit_cell(found.second));
+        dealii::FEValues<2> fv(mapping_, fe_, at, dealii::update_gradients);
+        fv.reinit(found.first);
+        std::vector<dealii::types::global_dof_index> idx(fe_.n_dofs_per_cell());
+        found.first->get_dof_indices(idx);
+        Sparse out;
+        for (unsigned i = 0; i < idx.size(); ++i)
+          {
+            const unsigned c = fe_.system_to_component_index(i).first;
+            const auto g     = fv.shape_grad_component(i, 0, c);
+            out.emplace_back(unsigned(idx[i]), lambda_ * g[c] + 2 * mu_ * d[int(c)] * (g[0] * d.x() + g[1] * d.y()));
+          }
+        return out;
+      }
+
       dealii::Vector<double> solve(dealii::Vector<double> f) const
       {
         for (unsigned i = 0; i < f.size(); ++i)
@@ -150,6 +170,7 @@ namespace gearfem::three_d
       dealii::SparseMatrix<double> K_;
       std::vector<bool> fixed_;
       dealii::SparseDirectUMFPACK solver_;
+      double lambda_ = 0, mu_ = 0;
     };
 
     /// The closest point to x on the boundary edges of `mesh` with id `id` (straight chords).
@@ -183,6 +204,11 @@ namespace gearfem::three_d
     std::unique_ptr<SolidBody> body;
     std::vector<Sparse> f3; ///< strip loads, index j * R + a
     Eigen::MatrixXd T3, T2;
+    /// Points inside the tension-side (drive) fillet of tooth 0 and their tangents; the fillet's
+    /// tangential stress [Pa/N] at point p in slice i under strip (a, j): S3(p N + i, j R + a);
+    /// in the section, S2(p, a).
+    std::vector<mesh::Vec2> fx, ft;
+    Eigen::MatrixXd S3, S2;
     double seconds = 0;
     int R() const { return int(r.size()); }
 
@@ -201,8 +227,11 @@ namespace gearfem::three_d
             const double z = j * dz + (l + g.point(q)[0]) * h, c = std::cos(o.twist * (z - 0.5 * o.face_width)),
                          s = std::sin(o.twist * (z - 0.5 * o.face_width));
             const auto rot = [&](const mesh::Vec2 &v) { return mesh::Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y()); };
-            // Just inside the body: the point finder needs the point in a cell.
-            const mesh::Vec2 p = rot(xa - 1e-9 * na), d = rot(na);
+            // Just inside the body: the point finder needs the point in a cell, and between
+            // the layers of a twisted body the helix through x bulges past the straight cells
+            // by its sagitta r (twist h)^2 / 8.
+            const double sag   = xa.norm() * std::pow(o.twist * h, 2) / 8;
+            const mesh::Vec2 p = rot(xa - (1e-9 + 4 * sag) * na), d = rot(na);
             Tensor3 force;
             force[0] = -d.x(), force[1] = -d.y(), force[2] = -nz;
             force *= g.weight(q) * h / dz;
@@ -256,7 +285,41 @@ namespace gearfem::three_d
         m.r.push_back(rr), m.x.push_back(on_edges(m.mesh, flank, p)), m.n.push_back(nn);
       }
 
+    // The fillet: the middle of each of its chords, moved a hundredth of the way to the centre
+    // of its cell (the point finder needs a point inside).
+    const unsigned fillet = mesh::boundary::tooth_id(0, mesh::boundary::fillet_drive);
+    for (const auto &e : m.mesh.boundary_edges)
+      {
+        if (e.boundary_id != fillet)
+          continue;
+        const mesh::Vec2 a = m.mesh.vertices[e.v0], b = m.mesh.vertices[e.v1], mid = 0.5 * (a + b);
+        for (const auto &c : m.mesh.cells)
+          if (std::count(c.begin(), c.end(), e.v0) && std::count(c.begin(), c.end(), e.v1))
+            {
+              mesh::Vec2 centre = mesh::Vec2::Zero();
+              for (const unsigned v : c)
+                centre += 0.25 * m.mesh.vertices[v];
+              m.fx.push_back(mid + 0.01 * (centre - mid)), m.ft.push_back((b - a).normalized());
+              break;
+            }
+      }
+    if (m.fx.empty())
+      throw SolverError("3-D face: the section mesh has no drive fillet on tooth 0");
+    const int P = int(m.fx.size());
     const int R = m.R(), N = m.o.slices, n = R * N;
+    std::vector<Sparse> g3;
+    const double dz = m.o.face_width / N;
+    for (int p = 0; p < P; ++p)
+      for (int i = 0; i < N; ++i)
+        {
+          const double z = (i + 0.5) * dz, w = m.o.twist * (z - 0.5 * m.o.face_width);
+          const double c = std::cos(w), sn = std::sin(w);
+          const mesh::Vec2 x = m.fx[std::size_t(p)], t = m.ft[std::size_t(p)];
+          Tensor3 d;
+          d[0] = c * t.x() - sn * t.y(), d[1] = sn * t.x() + c * t.y();
+          g3.push_back(m.body->stress_functional(Point3(c * x.x() - sn * x.y(), sn * x.x() + c * x.y(), z), d));
+        }
+    m.S3.resize(P * N, n);
     Progress bar(progress, std::size_t(n), "3-D face (z " + std::to_string(tooth.teeth()) + ")");
     for (int j = 0; j < N; ++j)
       for (int a = 0; a < R; ++a)
@@ -281,6 +344,14 @@ namespace gearfem::three_d
                 s += v * U[std::size_t(c) * nd + i];
               m.T3(l, k0 + c) = s;
             }
+        for (int c = 0; c < k; ++c)
+          for (int l = 0; l < P * N; ++l)
+            {
+              double s = 0;
+              for (const auto &[i, v] : g3[std::size_t(l)])
+                s += v * U[std::size_t(c) * nd + i];
+              m.S3(l, k0 + c) = s;
+            }
         bar.step(std::size_t(k0 + k));
       }
     m.T3 = 0.5 * (m.T3 + m.T3.transpose()).eval();
@@ -290,13 +361,19 @@ namespace gearfem::three_d
     std::vector<Sparse> f2;
     for (int a = 0; a < R; ++a)
       f2.push_back(sparse(section.point_force(m.x[std::size_t(a)] - 1e-9 * m.n[std::size_t(a)], -m.n[std::size_t(a)])));
+    std::vector<Sparse> g2;
+    for (int p = 0; p < P; ++p)
+      g2.push_back(section.stress_functional(m.fx[std::size_t(p)], m.ft[std::size_t(p)]));
     m.T2.resize(R, R);
+    m.S2.resize(P, R);
     for (int a = 0; a < R; ++a)
       {
         dealii::Vector<double> f(section.point_force(m.x[std::size_t(a)] - 1e-9 * m.n[std::size_t(a)], -m.n[std::size_t(a)]));
         const auto u = section.solve(f);
         for (int b = 0; b < R; ++b)
           m.T2(b, a) = dot(f2[std::size_t(b)], u);
+        for (int p = 0; p < P; ++p)
+          m.S2(p, a) = dot(g2[std::size_t(p)], u);
       }
     m.T2      = 0.5 * (m.T2 + m.T2.transpose()).eval();
     m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -343,6 +420,33 @@ namespace gearfem::three_d
     for (int i = 0; i < N; ++i)
       C(i, i) -= section(r[std::size_t(i)], r[std::size_t(i)]);
     return C;
+  }
+
+  std::vector<double> FaceCompliance::section_load(const std::vector<double> &force, const std::vector<double> &r) const
+  {
+    const Impl &m = *impl_;
+    const int N = m.o.slices, R = m.R(), P = int(m.fx.size());
+    if (int(force.size()) != N || int(r.size()) != N)
+      throw InputError("3-D face forces", std::to_string(force.size()), std::to_string(N) + " (one per slice)");
+    std::vector<double> out(std::size_t(N), 0.0);
+    for (int i = 0; i < N; ++i)
+      {
+        double s3 = 0, s2 = 0;
+        const auto [a, w] = m.weight(r[std::size_t(i)]);
+        for (int p = 0; p < P; ++p)
+          {
+            double s = 0;
+            for (int j = 0; j < N; ++j)
+              {
+                const auto [b, v] = m.weight(r[std::size_t(j)]);
+                s += force[std::size_t(j)] * ((1 - v) * m.S3(p * N + i, j * R + b) + v * m.S3(p * N + i, j * R + b + 1));
+              }
+            s3 = std::max(s3, s);
+            s2 = std::max(s2, (1 - w) * m.S2(p, a) + w * m.S2(p, a + 1));
+          }
+        out[std::size_t(i)] = s2 > 0 ? std::max(0.0, s3 / s2) : 0.0;
+      }
+    return out;
   }
 
   void FaceCompliance::write_vtu(const std::vector<double> &force, const std::vector<double> &r,

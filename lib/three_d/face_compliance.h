@@ -61,6 +61,13 @@ namespace gearfem::three_d
     /// C3 - diag(C2) over the slices at radii r (one per slice) [m/N].
     Eigen::MatrixXd correction(const std::vector<double> &r) const;
 
+    /// The fillet of a slice in 3-D: under transverse strip forces `force` [N] at radii r (one
+    /// per slice), the force each slice's 2-D section would carry to reach the 3-D body's
+    /// largest tangential stress on the drive fillet of that slice [N] (both on the coarse
+    /// cells: the ratio keeps their error out). A uniform load on a face without Poisson's
+    /// coupling gives `force` back.
+    std::vector<double> section_load(const std::vector<double> &force, const std::vector<double> &r) const;
+
     /// The 3-D body under transverse strip forces `force` [N] at radii r (one per slice): its
     /// VTU (displacement, and its copy times `scale`), written atomically.
     void write_vtu(const std::vector<double> &force, const std::vector<double> &r, const std::filesystem::path &file,

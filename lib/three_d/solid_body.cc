@@ -144,6 +144,9 @@ namespace gearfem::three_d
   {
     const dealii::MappingQ1<3> mapping;
     const auto found = dealii::GridTools::find_active_cell_around_point(mapping, dof_handler_, x);
+    if (found.first.state() != dealii::IteratorState::valid)
+      throw SolverError("3-D body: the point (" + to_string_g(x[0]) + ", " + to_string_g(x[1]) + ", " +
+                        to_string_g(x[2]) + ") m lies in no cell");
     const dealii::Quadrature<3> at(dealii::GeometryInfo<3>::project_to_unit_cell(found.second));
     dealii::FEValues<3> fv(mapping, fe_, at, dealii::update_values);
     fv.reinit(found.first);
@@ -151,6 +154,31 @@ namespace gearfem::three_d
     found.first->get_dof_indices(dofs);
     for (unsigned i = 0; i < dofs.size(); ++i)
       f[dofs[i]] += fv.shape_value(i, 0) * force[fe_.system_to_component_index(i).first];
+  }
+
+  std::vector<std::pair<unsigned, double>> SolidBody::stress_functional(const Point3 &x, const Tensor3 &d) const
+  {
+    const dealii::MappingQ1<3> mapping;
+    const auto found = dealii::GridTools::find_active_cell_around_point(mapping, dof_handler_, x);
+    if (found.first.state() != dealii::IteratorState::valid)
+      throw SolverError("3-D body: the point (" + to_string_g(x[0]) + ", " + to_string_g(x[1]) + ", " +
+                        to_string_g(x[2]) + ") m lies in no cell");
+    const dealii::Quadrature<3> at(dealii::GeometryInfo<3>::project_to_unit_cell(found.second));
+    dealii::FEValues<3> fv(mapping, fe_, at, dealii::update_gradients);
+    fv.reinit(found.first);
+    std::vector<dealii::types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+    found.first->get_dof_indices(dofs);
+    const double E = material_.youngs_modulus, nu = material_.poisson_ratio;
+    const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    std::vector<std::pair<unsigned, double>> out;
+    for (unsigned i = 0; i < dofs.size(); ++i)
+      {
+        // Shape function i is e_c phi: div = d_c phi, d . sym grad . d = d_c (grad phi . d).
+        const unsigned c = fe_.system_to_component_index(i).first;
+        const auto g     = fv.shape_grad_component(i, 0, c);
+        out.emplace_back(unsigned(dofs[i]), lambda * g[c] + 2 * mu * d[c] * (g * d));
+      }
+    return out;
   }
 
   dealii::Vector<double> SolidBody::solve(const dealii::Vector<double> &f) const

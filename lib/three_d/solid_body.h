@@ -60,6 +60,9 @@ namespace gearfem::three_d
                                          const std::function<bool(const Point3 &)> &where = {}) const;
     /// Add the point force `force` [N] at x (a point of the body) to f.
     void add_point_force(const Point3 &x, const Tensor3 &force, dealii::Vector<double> &f) const;
+    /// The normal stress d . sigma_h(x) . d at a point of the body (d a unit vector) as a
+    /// linear functional of the displacement: (DoF, coefficient) pairs [Pa/m].
+    std::vector<std::pair<unsigned, double>> stress_functional(const Point3 &x, const Tensor3 &d) const;
     /// u = K^-1 f with the clamped DoFs at zero.
     dealii::Vector<double> solve(const dealii::Vector<double> &f) const;
     /// The same for k load vectors at once (column-major n_dofs x k, overwritten by the
